@@ -1,0 +1,15 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// Convenience header: includes every public header of the package.
+#ifndef GEODESIC_RIDGE_H
+#define GEODESIC_RIDGE_H
+
+#include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/parameters.h>
+#include <Geodesic_ridge/source.h>
+#include <Geodesic_ridge/mesh_validation.h>
+#include <Geodesic_ridge/rough_cut_locus.h>
+#include <Geodesic_ridge/IO/read_triangle_mesh.h>
+#include <Geodesic_ridge/IO/polylines.h>
+
+#endif // GEODESIC_RIDGE_H

@@ -1,0 +1,415 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// Reads a triangle mesh from an OFF, OBJ or PLY file, keeping the file's
+// vertex and face order, and turns every problem into a typed exception.
+#ifndef GEODESIC_RIDGE_IO_READ_TRIANGLE_MESH_H
+#define GEODESIC_RIDGE_IO_READ_TRIANGLE_MESH_H
+
+#include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/mesh_validation.h>
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace Geodesic_ridge {
+namespace internal {
+namespace mesh_io {
+
+enum class Mesh_file_format { OFF, OBJ, PLY };
+
+[[noreturn]] inline void file_error(const std::string& filename, const std::string& what)
+{
+  throw Mesh_file_error(filename + ": " + what);
+}
+
+inline Mesh_file_format mesh_file_format(const std::string& filename)
+{
+  std::string ext = std::filesystem::path(filename).extension().string();
+  for(char& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if(ext == ".off")
+    return Mesh_file_format::OFF;
+  if(ext == ".obj")
+    return Mesh_file_format::OBJ;
+  if(ext == ".ply")
+    return Mesh_file_format::PLY;
+  file_error(filename, ext.empty() ? std::string("file name has no extension; expected .off, .obj or .ply")
+                                   : "unsupported extension '" + ext + "'; expected .off, .obj or .ply");
+}
+
+// Whole-token parsers. `strtod` accepts "nan", "inf" and overflowing values
+// (giving infinity), which CGAL's readers reject as malformed: parsing them
+// here lets the validation name the vertex with the non-finite coordinate.
+inline bool parse_double(const std::string& token, double& value)
+{
+  const char* begin = token.c_str();
+  char* end = nullptr;
+  value = std::strtod(begin, &end);
+  return end != begin && *end == '\0';
+}
+
+inline bool parse_integer(const std::string& token, long long& value)
+{
+  const char* begin = token.c_str();
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtoll(begin, &end, 10);
+  return end != begin && *end == '\0' && errno != ERANGE;
+}
+
+// The lines of a text file, split into whitespace-separated tokens, with
+// `#` comments removed (as CGAL's OFF and OBJ readers do).
+class Token_lines
+{
+  std::ifstream m_in;
+  std::size_t m_line_number = 0;
+
+public:
+  explicit Token_lines(const std::string& filename) : m_in(filename) {}
+
+  std::size_t line_number() const { return m_line_number; }
+
+  // The tokens of the next line that has some; false at the end of the file.
+  bool next(std::vector<std::string>& tokens)
+  {
+    std::string line;
+    while(std::getline(m_in, line))
+    {
+      ++m_line_number;
+      const std::size_t hash = line.find('#');
+      if(hash != std::string::npos)
+        line.erase(hash);
+      std::istringstream words(line);
+      tokens.clear();
+      for(std::string word; words >> word;)
+        tokens.push_back(word);
+      if(!tokens.empty())
+        return true;
+    }
+    return false;
+  }
+};
+
+// Re-reads an ASCII OFF file that CGAL's reader rejected, to say why. Throws
+// `Mesh_file_error` naming the line for a syntax error or a truncation;
+// otherwise fills the soup, whose validation then names the semantic problem
+// (an index out of range, a NaN coordinate). Returns false for the OFF
+// variants it does not know (COFF, NOFF, binary, ...).
+template <class Point>
+bool diagnose_OFF(const std::string& filename, std::vector<Point>& points,
+                  std::vector<std::vector<std::size_t>>& polygons)
+{
+  Token_lines lines(filename);
+  std::vector<std::string> tokens;
+  auto where = [&] { return "line " + std::to_string(lines.line_number()) + ": "; };
+
+  if(!lines.next(tokens))
+    file_error(filename, "file is empty (no OFF header)");
+  if(tokens[0] != "OFF")
+  {
+    const std::string& t = tokens[0];
+    if(t.size() > 3 && t.compare(t.size() - 3, 3, "OFF") == 0)
+      return false;
+    file_error(filename, where() + "expected the OFF header, found '" + t + "'");
+  }
+  if(tokens.size() > 1)
+    tokens.erase(tokens.begin()); // "OFF V F E" on one line
+  else if(!lines.next(tokens))
+    file_error(filename, "file ends after the OFF keyword (no 'V F E' counts)");
+  if(tokens[0] == "BINARY")
+    return false;
+  long long counts[3];
+  if(tokens.size() != 3 || !parse_integer(tokens[0], counts[0]) || !parse_integer(tokens[1], counts[1]) ||
+     !parse_integer(tokens[2], counts[2]) || counts[0] < 0 || counts[1] < 0)
+    file_error(filename, where() + "expected the OFF counts 'V F E' (three integers)");
+  const std::size_t nv = static_cast<std::size_t>(counts[0]);
+  const std::size_t nf = static_cast<std::size_t>(counts[1]);
+  auto truncated = [&](const std::string& what) {
+    file_error(filename, "file is truncated: the header announces " + std::to_string(nv) + " vertices and " +
+                           std::to_string(nf) + " faces, but it ends after " + what);
+  };
+
+  points.clear();
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    if(!lines.next(tokens))
+      truncated(std::to_string(i) + " vertices");
+    if(tokens.size() < 3)
+      file_error(filename, where() + "vertex " + std::to_string(i) + " has " + std::to_string(tokens.size()) +
+                             " coordinate(s), expected 3");
+    double c[3];
+    for(int k = 0; k < 3; ++k)
+      if(!parse_double(tokens[k], c[k]))
+        file_error(filename, where() + "vertex " + std::to_string(i) + ": '" + tokens[k] + "' is not a number");
+    points.emplace_back(c[0], c[1], c[2]);
+  }
+
+  polygons.clear();
+  for(std::size_t j = 0; j < nf; ++j)
+  {
+    if(!lines.next(tokens))
+      truncated(std::to_string(j) + " faces");
+    long long n = 0;
+    if(!parse_integer(tokens[0], n) || n < 0)
+      file_error(filename, where() + "face " + std::to_string(j) + ": '" + tokens[0] + "' is not a vertex count");
+    if(tokens.size() < static_cast<std::size_t>(n) + 1)
+      file_error(filename, where() + "face " + std::to_string(j) + " announces " + std::to_string(n) +
+                             " vertices but lists " + std::to_string(tokens.size() - 1));
+    polygons.emplace_back();
+    for(std::size_t k = 1; k <= static_cast<std::size_t>(n); ++k)
+    {
+      long long id = 0;
+      if(!parse_integer(tokens[k], id) || id < 0)
+        file_error(filename, where() + "face " + std::to_string(j) + ": '" + tokens[k] + "' is not a vertex index");
+      polygons.back().push_back(static_cast<std::size_t>(id));
+    }
+  }
+  return true;
+}
+
+// Reads an OBJ file strictly. CGAL's OBJ reader silently drops a face token
+// that is not a number ("f 1 2 x" gives a 2-gon) and maps the invalid index 0
+// to a vertex defined later in the file: we run this parser on every OBJ file
+// to reject such files, and use its soup to explain a file CGAL rejected.
+template <class Point>
+void parse_OBJ_strictly(const std::string& filename, std::vector<Point>& points,
+                        std::vector<std::vector<std::size_t>>& polygons)
+{
+  // The statements CGAL 5.5's OBJ reader accepts and ignores.
+  static const char* const ignored[] = {
+    "vt", "vn", "vp", "bevel", "lod", "ctech", "c_interp", "usemap", "usemtl", "stech", "d_interp", "mtllib",
+    "shadow_obj", "trace_obj", "o", "g", "s", "p", "cstype", "deg", "step", "bmat", "con", "curv", "curv2",
+    "surf", "parm", "trim", "hole", "scrv", "sp", "end", "surf_1", "q0_1", "q1_1", "curv2d_1", "surf_2",
+    "q0_2", "q1_2", "curv2d_2", "bsp", "bzp", "cdc", "cdp", "res"};
+
+  Token_lines lines(filename);
+  std::vector<std::string> tokens;
+  auto where = [&] { return "line " + std::to_string(lines.line_number()) + ": "; };
+  points.clear();
+  polygons.clear();
+  while(lines.next(tokens))
+  {
+    const std::string& s = tokens[0];
+    if(s == "v")
+    {
+      if(tokens.size() < 4)
+        file_error(filename, where() + "vertex " + std::to_string(points.size()) + " has " +
+                               std::to_string(tokens.size() - 1) + " coordinate(s), expected 3");
+      double c[3];
+      for(int k = 0; k < 3; ++k)
+        if(!parse_double(tokens[k + 1], c[k]))
+          file_error(filename, where() + "vertex " + std::to_string(points.size()) + ": '" + tokens[k + 1] +
+                                 "' is not a number");
+      points.emplace_back(c[0], c[1], c[2]);
+    }
+    else if(s == "f")
+    {
+      polygons.emplace_back();
+      for(std::size_t k = 1; k < tokens.size(); ++k)
+      {
+        // "i", "i/t", "i//n" or "i/t/n": only the vertex reference i matters.
+        const std::string ref = tokens[k].substr(0, tokens[k].find('/'));
+        long long i = 0;
+        if(!parse_integer(ref, i) || i == 0)
+          file_error(filename, where() + "face " + std::to_string(polygons.size() - 1) + ": '" + tokens[k] +
+                                 "' is not a vertex reference (1-based, or negative for relative)");
+        if(i < 0 && static_cast<long long>(points.size()) + i < 0)
+          file_error(filename, where() + "face " + std::to_string(polygons.size() - 1) + ": relative reference " +
+                                 tokens[k] + " points before the first vertex");
+        // A positive reference may name a vertex defined further down the file;
+        // one past the end is left to the validation (index out of range).
+        polygons.back().push_back(i > 0 ? static_cast<std::size_t>(i - 1)
+                                        : static_cast<std::size_t>(static_cast<long long>(points.size()) + i));
+      }
+    }
+    else if(std::find(std::begin(ignored), std::end(ignored), s) == std::end(ignored))
+      file_error(filename, where() + "unknown OBJ statement '" + s + "'");
+  }
+}
+
+// Reads the soup with CGAL's reader and throws `Mesh_file_error` (or, for a
+// file CGAL rejected because of an out-of-range index or a NaN, the
+// validation's `Invalid_mesh_error`) when it cannot be read entirely.
+template <class Point>
+void read_polygon_soup_or_throw(const std::string& filename, std::vector<Point>& points,
+                                std::vector<std::vector<std::size_t>>& polygons)
+{
+  const Mesh_file_format format = mesh_file_format(filename);
+  {
+    std::error_code ec;
+    if(std::filesystem::is_directory(filename, ec))
+      file_error(filename, "is a directory, not a mesh file");
+    errno = 0;
+    std::ifstream probe(filename);
+    if(!probe)
+      file_error(filename, std::string("cannot open the file (") +
+                             (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
+  }
+
+  std::vector<Point> strict_points;
+  std::vector<std::vector<std::size_t>> strict_polygons;
+  if(format == Mesh_file_format::OBJ)
+    parse_OBJ_strictly(filename, strict_points, strict_polygons);
+
+  points.clear();
+  polygons.clear();
+  // verbose(false): some of CGAL's readers print to std::cerr by default; we
+  // report through the exception only.
+  if(CGAL::IO::read_polygon_soup(filename, points, polygons, CGAL::parameters::verbose(false)))
+    return; // CGAL's OFF and PLY readers fail on a truncated file (checked), so the soup is complete.
+
+  // CGAL failed: explain why as precisely as we can. On failure its soup may hold
+  // uninitialized points, so it is dropped.
+  points.clear();
+  polygons.clear();
+  bool have_soup = false;
+  if(format == Mesh_file_format::OBJ)
+  {
+    strict_points.swap(points);
+    strict_polygons.swap(polygons);
+    have_soup = true;
+  }
+  else if(format == Mesh_file_format::OFF)
+    have_soup = diagnose_OFF(filename, points, polygons);
+  else
+  {
+    std::ifstream in(filename, std::ios::binary);
+    std::string magic;
+    std::getline(in, magic);
+    if(magic.compare(0, 3, "ply") != 0)
+      file_error(filename, "does not start with 'ply': not a PLY file");
+  }
+  if(have_soup)
+  {
+    try
+    {
+      validate_triangle_soup(points, polygons);
+    }
+    catch(const Invalid_mesh_error& e)
+    {
+      throw Invalid_mesh_error(filename + ": " + e.what());
+    }
+  }
+  const char* name = format == Mesh_file_format::OFF ? "OFF" : format == Mesh_file_format::OBJ ? "OBJ" : "PLY";
+  file_error(filename, std::string("malformed or truncated ") + name +
+                         " content (CGAL's reader rejected it: a value that is not a number, a missing"
+                         " value, or fewer elements than the header announces)");
+}
+
+} // namespace mesh_io
+} // namespace internal
+
+namespace IO {
+
+/// \ingroup PkgGeodesicRidgeIO
+///
+/// \brief reads a closed triangle mesh from an OFF, OBJ or PLY file, checks it
+/// with `validate_triangle_soup()`, and builds `tm` from it.
+///
+/// The format is chosen by the file extension (`.off`, `.obj`, `.ply`, in any
+/// letter case) and the file is read with `CGAL::IO::read_polygon_soup()`.
+/// Vertex `i` and face `j` of the file are added as the `i`-th vertex and the
+/// `j`-th face of `tm`, which is cleared first: for a `CGAL::Surface_mesh`,
+/// they are vertex `i` and face `j`, so the indices a user gives (source
+/// vertex, source face) mean the same thing in the file and in `tm`. This is
+/// why non-triangle faces are rejected rather than triangulated.
+///
+/// Every failure is an exception, never a partial mesh: `tm` is modified only
+/// once the file has been read and validated.
+///
+/// Beyond CGAL's readers, the function
+/// - checks the extension and that the file can be opened before reading;
+/// - re-reads an ASCII OFF file that CGAL rejected to name the line at fault
+///   (a non-numeric token, a missing value, a truncation: the header announces
+///   more vertices or faces than the file holds), and reports a NaN, infinite
+///   or overflowing coordinate or an out-of-range index as the corresponding
+///   validation error;
+/// - parses every OBJ file strictly as well, because CGAL's OBJ reader
+///   silently drops a non-numeric face token and maps the invalid index 0 to
+///   a vertex defined later in the file.
+///
+/// Known leniencies kept from CGAL's readers: an OFF file with more face lines
+/// than its header announces is read up to the announced count; an OFF face
+/// index such as `1.7` is truncated to `1`; extra values at the end of an OFF
+/// vertex or face line (colors) are ignored.
+///
+/// \tparam TriangleMesh a model of `MutableFaceGraph` with an internal
+///         `CGAL::vertex_point` property map, e.g. `CGAL::Surface_mesh<Point_3>`
+///
+/// \param filename the path of the file
+/// \param tm the mesh to fill
+///
+/// \throws Mesh_file_error if the file cannot be opened, has an unsupported
+///         extension, or its content is malformed or truncated; the message
+///         names the file (and the line, when it can)
+/// \throws Invalid_mesh_error if the mesh breaks a rule of
+///         `validate_triangle_soup()`; the message starts with the file name
+template <class TriangleMesh>
+void read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
+{
+  using VPM = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type;
+  using Point = typename boost::property_traits<VPM>::value_type;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  internal::mesh_io::read_polygon_soup_or_throw(filename, points, polygons);
+  try
+  {
+    validate_triangle_soup(points, polygons);
+  }
+  catch(const Invalid_mesh_error& e)
+  {
+    throw Invalid_mesh_error(filename + ": " + e.what());
+  }
+
+  // Build in file order. The soup is a closed, oriented, manifold triangle
+  // mesh, so Euler::add_face cannot fail whatever the face order; if it does,
+  // it is a bug here or in the validation.
+  CGAL::clear(tm);
+  VPM vpm = get(CGAL::vertex_point, tm);
+  std::vector<vertex_descriptor> vds;
+  vds.reserve(points.size());
+  for(const Point& p : points)
+  {
+    vds.push_back(add_vertex(tm));
+    put(vpm, vds.back(), p);
+  }
+  for(std::size_t j = 0; j < polygons.size(); ++j)
+  {
+    const std::array<vertex_descriptor, 3> corners = {vds[polygons[j][0]], vds[polygons[j][1]], vds[polygons[j][2]]};
+    if(CGAL::Euler::add_face(corners, tm) == boost::graph_traits<TriangleMesh>::null_face())
+    {
+      CGAL::clear(tm);
+      throw Algorithm_error(filename + ": face " + std::to_string(j) +
+                            " could not be added to the mesh although the mesh validated; please report this bug");
+    }
+  }
+}
+
+} // namespace IO
+
+// Also reachable as Geodesic_ridge::read_triangle_mesh; IO:: is the spelling
+// that follows CGAL (CGAL::IO::read_polygon_mesh).
+using IO::read_triangle_mesh;
+
+} // namespace Geodesic_ridge
+
+#endif // GEODESIC_RIDGE_IO_READ_TRIANGLE_MESH_H

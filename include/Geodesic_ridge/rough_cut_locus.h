@@ -1,0 +1,590 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// Stage 1: the rough cut locus (DESIGN.md §2, paper §3.1).
+//
+//   Dijkstra shortest-path tree T  ->  dual T* of the non-tree edges
+//   -> significance of every dual edge  -> pruning by tolerance
+//   -> primal cut graph K on mesh edges: cutting the mesh along K gives one
+//      topological disk with the source strictly inside.
+#ifndef GEODESIC_RIDGE_ROUGH_CUT_LOCUS_H
+#define GEODESIC_RIDGE_ROUGH_CUT_LOCUS_H
+
+#include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/graph_polylines.h>
+#include <Geodesic_ridge/internal/union_find.h>
+#include <Geodesic_ridge/mesh_validation.h>
+#include <Geodesic_ridge/parameters.h>
+#include <Geodesic_ridge/source.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+#include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace Geodesic_ridge {
+
+/// \ingroup PkgGeodesicRidgeRef
+/// What a mesh edge is to the rough cut locus.
+enum class Edge_role : unsigned char
+{
+  shortest_path_tree, ///< an edge of the Dijkstra shortest-path tree T
+  source_face,        ///< an edge of a face holding the source (never crossed by T*)
+  dual_pruned,        ///< crossed by an edge of T* whose significance is below the tolerance
+  dual_kept           ///< crossed by an edge of T* that survives the pruning
+};
+
+/// \ingroup PkgGeodesicRidgeRef
+/// Counts and timings of stage 1 (seconds).
+struct Rough_cut_locus_statistics
+{
+  int genus = 0;
+  std::size_t number_of_vertices = 0, number_of_edges = 0, number_of_faces = 0;
+  std::size_t number_of_dual_edges = 0;      ///< |T*| = F' - 1 + 2g (F' = faces not holding the source)
+  std::size_t number_of_core_dual_edges = 0; ///< dual edges on the 2-core (significance = total area)
+  std::size_t number_of_kept_dual_edges = 0;
+  std::size_t number_of_kept_dual_leaves = 0; ///< faces with exactly one kept dual edge
+  std::size_t number_of_cut_edges = 0;        ///< |K|
+  std::size_t number_of_cut_vertices = 0;
+  std::size_t number_of_cut_leaves = 0;       ///< vertices of degree 1 in K
+  std::size_t cut_cycle_rank = 0;             ///< |K| - |V(K)| + 1; equals 2g
+  std::size_t number_of_closing_rungs = 0;    ///< rungs added back to close the 2g cycles
+  std::size_t number_of_teeth_pruned = 0;     ///< one-edge leaves of K removed
+  bool fallback_single_rung = false;          ///< no dual edge reached the tolerance: K is the best rung
+  double time_shortest_path_tree = 0, time_significance = 0, time_cut_graph = 0,
+         time_disk_check = 0, time_total = 0;
+};
+
+/// \ingroup PkgGeodesicRidgeRef
+/// The result of stage 1. Per-vertex vectors are indexed by the vertex index
+/// map, per-edge vectors by the edge index map (for `CGAL::Surface_mesh`:
+/// `v.idx()` and `e.idx()`).
+template <class TriangleMesh>
+struct Rough_cut_locus
+{
+  typedef boost::graph_traits<TriangleMesh>   GT;
+  typedef typename GT::vertex_descriptor     vertex_descriptor;
+  typedef typename GT::edge_descriptor       edge_descriptor;
+  typedef typename GT::face_descriptor       face_descriptor;
+
+  Geodesic_source<TriangleMesh> source;
+  double tolerance = default_tolerance;
+  double total_area = 0;
+
+  /// Dijkstra distance along mesh edges (per vertex)
+  std::vector<double> distance;
+  /// predecessor in the shortest-path tree T (per vertex; a root is its own parent)
+  std::vector<vertex_descriptor> parent;
+
+  /// role of every edge (per edge)
+  std::vector<Edge_role> edge_role;
+  /// significance I(e) of the dual edge crossing e (per edge; NaN if e is not crossed by T*)
+  std::vector<double> significance;
+  /// 1 if e is in the primal cut graph K (per edge)
+  std::vector<char> is_cut_edge;
+
+  /// the mesh edges crossed by T*, by increasing edge index
+  std::vector<edge_descriptor> dual_edges;
+  /// those that survive the pruning (the kept dual structure), by increasing edge index
+  std::vector<edge_descriptor> kept_dual_edges;
+  /// the primal cut graph K, by increasing edge index
+  std::vector<edge_descriptor> cut_edges;
+
+  Rough_cut_locus_statistics statistics;
+};
+
+namespace internal {
+
+inline double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+template <class TriangleMesh, class NamedParameters>
+Rough_cut_locus<TriangleMesh>
+rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
+                     const NamedParameters& np)
+{
+  typedef boost::graph_traits<TriangleMesh>  GT;
+  typedef typename GT::vertex_descriptor    vertex_descriptor;
+  typedef typename GT::halfedge_descriptor  halfedge_descriptor;
+  typedef typename GT::edge_descriptor      edge_descriptor;
+  typedef typename GT::face_descriptor      face_descriptor;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+
+  const auto t_start = std::chrono::steady_clock::now();
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto eim = CGAL::get_initialized_edge_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+
+  const std::size_t nv = num_vertices(tm), ne = num_edges(tm), nf = num_faces(tm);
+  auto vi = [&](vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
+  auto ei = [&](edge_descriptor e) { return static_cast<std::size_t>(get(eim, e)); };
+  auto fi = [&](face_descriptor f) { return static_cast<std::size_t>(get(fim, f)); };
+
+  Rough_cut_locus<TriangleMesh> r;
+  r.source = src;
+  r.tolerance = get_tolerance(np);
+  Rough_cut_locus_statistics& st = r.statistics;
+  st.number_of_vertices = nv;
+  st.number_of_edges = ne;
+  st.number_of_faces = nf;
+  const long chi = static_cast<long>(nv) - static_cast<long>(ne) + static_cast<long>(nf);
+  st.genus = static_cast<int>((2 - chi) / 2);
+
+  std::vector<edge_descriptor> edge_of(ne);
+  for(edge_descriptor e : edges(tm))
+  {
+    if(ei(e) >= ne)
+      throw Invalid_mesh_error("mesh has removed elements (call collect_garbage() first)");
+    edge_of[ei(e)] = e;
+  }
+  std::vector<face_descriptor> face_of(nf);
+  for(face_descriptor f : faces(tm))
+  {
+    if(fi(f) >= nf)
+      throw Invalid_mesh_error("mesh has removed elements (call collect_garbage() first)");
+    face_of[fi(f)] = f;
+  }
+
+  // ---------------------------------------------------------------------------
+  // 1. Shortest-path tree T (Boost Dijkstra, several seeds for a surface point).
+  auto t0 = std::chrono::steady_clock::now();
+  std::vector<double> length(ne);
+  for(edge_descriptor e : edges(tm))
+    length[ei(e)] = distance_between(vpm, source(e, tm), target(e, tm));
+
+  const double inf = std::numeric_limits<double>::infinity();
+  r.distance.assign(nv, inf);
+  r.parent.resize(nv);
+  for(vertex_descriptor v : vertices(tm)) r.parent[vi(v)] = v;
+  std::vector<vertex_descriptor> seed_vertices;
+  for(const auto& s : src.seeds)
+  {
+    r.distance[vi(s.first)] = s.second;
+    seed_vertices.push_back(s.first);
+  }
+  boost::dijkstra_shortest_paths_no_init(
+      tm, seed_vertices.begin(), seed_vertices.end(),
+      boost::make_iterator_property_map(r.parent.begin(), vim),
+      boost::make_iterator_property_map(r.distance.begin(), vim),
+      boost::make_iterator_property_map(length.begin(), eim), vim,
+      std::less<double>(), boost::closed_plus<double>(inf), 0.0,
+      boost::default_dijkstra_visitor());
+  // A straight segment from the source is a geodesic (no edge path in R^3 is
+  // shorter), so seeds stay roots and a vertex source's neighbours hang from it,
+  // whatever ties the floating-point sums produced: the cut never touches the source.
+  for(const auto& s : src.seeds)
+  {
+    r.distance[vi(s.first)] = s.second;
+    r.parent[vi(s.first)] = s.first;
+  }
+  if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX)
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(src.vertex, tm))
+    {
+      const vertex_descriptor u = source(h, tm);
+      r.parent[vi(u)] = src.vertex;
+      r.distance[vi(u)] = length[ei(edge(h, tm))];
+    }
+  for(vertex_descriptor v : vertices(tm))
+    if(!(r.distance[vi(v)] < inf))
+      throw Invalid_mesh_error("vertex " + std::to_string(vi(v)) +
+                               " cannot be reached from the source");
+  st.time_shortest_path_tree = seconds_since(t0);
+
+  // ---------------------------------------------------------------------------
+  // 2. Edge roles and the dual T*; significance by peeling leaves of T* (O(F)).
+  t0 = std::chrono::steady_clock::now();
+  std::vector<char> is_source_face(nf, 0);
+  for(face_descriptor f : src.faces) is_source_face[fi(f)] = 1;
+  r.edge_role.assign(ne, Edge_role::dual_pruned);
+  r.significance.assign(ne, std::numeric_limits<double>::quiet_NaN());
+  for(edge_descriptor e : edges(tm))
+  {
+    const halfedge_descriptor h = halfedge(e, tm);
+    const vertex_descriptor a = source(h, tm), b = target(h, tm);
+    const bool in_tree = (r.parent[vi(a)] == b && a != b) || (r.parent[vi(b)] == a && a != b);
+    if(in_tree)
+      r.edge_role[ei(e)] = Edge_role::shortest_path_tree;
+    else if(is_source_face[fi(face(h, tm))] || is_source_face[fi(face(opposite(h, tm), tm))])
+      r.edge_role[ei(e)] = Edge_role::source_face;
+    else
+      r.dual_edges.push_back(e);
+  }
+  st.number_of_dual_edges = r.dual_edges.size();
+  const std::size_t dual_faces = nf - src.faces.size();
+  if(static_cast<long>(r.dual_edges.size()) != static_cast<long>(dual_faces) - 1 + 2 * st.genus)
+    throw Algorithm_error("the dual of the shortest-path tree has " +
+                          std::to_string(r.dual_edges.size()) + " edges, expected " +
+                          std::to_string(static_cast<long>(dual_faces) - 1 + 2 * st.genus));
+
+  std::vector<double> area(nf);
+  r.total_area = 0;
+  for(face_descriptor f : faces(tm))
+  {
+    area[fi(f)] = CGAL::Polygon_mesh_processing::face_area(f, tm, CGAL::parameters::vertex_point_map(vpm));
+    r.total_area += area[fi(f)];
+  }
+  const double total = r.total_area;
+  // The faces holding a surface-point source are no nodes of T*: the two sides
+  // of a dual edge share the rest of the area.
+  double node_total = total;
+  for(face_descriptor f : src.faces) node_total -= area[fi(f)];
+
+  // dual adjacency, by position in dual_edges
+  const std::size_t nd = r.dual_edges.size();
+  std::vector<std::array<std::size_t, 2> > dual_faces_of(nd);
+  std::vector<std::array<std::size_t, 3> > dual_of_face(nf);
+  std::vector<unsigned char> dual_degree(nf, 0);
+  for(std::size_t d = 0; d < nd; ++d)
+  {
+    const halfedge_descriptor h = halfedge(r.dual_edges[d], tm);
+    const std::size_t f1 = fi(face(h, tm)), f2 = fi(face(opposite(h, tm), tm));
+    dual_faces_of[d] = {f1, f2};
+    dual_of_face[f1][dual_degree[f1]++] = d;
+    dual_of_face[f2][dual_degree[f2]++] = d;
+  }
+  // Peel leaves: when a face becomes a leaf, its one remaining dual edge
+  // separates the faces accumulated in it from the rest. What is never peeled
+  // is the 2-core (the non-contractible cycles and the paths joining them).
+  const std::size_t none = std::numeric_limits<std::size_t>::max();
+  std::vector<double> accumulated(area);
+  std::vector<unsigned char> degree(dual_degree);
+  std::vector<char> peeled(nd, 0);
+  std::vector<std::size_t> child_face(nd, none), peel_order;
+  peel_order.reserve(nd);
+  std::vector<std::size_t> queue;
+  for(std::size_t f = 0; f < nf; ++f)
+    if(degree[f] == 1) queue.push_back(f);
+  for(std::size_t qi = 0; qi < queue.size(); ++qi)
+  {
+    const std::size_t f = queue[qi];
+    if(degree[f] != 1) continue;
+    std::size_t d = none;
+    for(unsigned char k = 0; k < dual_degree[f]; ++k)
+      if(!peeled[dual_of_face[f][k]]) d = dual_of_face[f][k];
+    peeled[d] = 1;
+    child_face[d] = f;
+    peel_order.push_back(d);
+    const double side = accumulated[f];
+    r.significance[ei(r.dual_edges[d])] = (std::min)(side, node_total - side);
+    const std::size_t p = dual_faces_of[d][0] == f ? dual_faces_of[d][1] : dual_faces_of[d][0];
+    accumulated[p] += side;
+    degree[f] = 0;
+    if(--degree[p] == 1) queue.push_back(p);
+  }
+  for(std::size_t d = 0; d < nd; ++d)
+    if(!peeled[d])
+    {
+      r.significance[ei(r.dual_edges[d])] = total;
+      ++st.number_of_core_dual_edges;
+    }
+  st.time_significance = seconds_since(t0);
+
+  // ---------------------------------------------------------------------------
+  // 3. Pruning, then the primal cut graph K.
+  t0 = std::chrono::steady_clock::now();
+  const double threshold = r.tolerance * total;
+  std::vector<char> kept(nd, 0);
+  std::size_t nkept = 0;
+  for(std::size_t d = 0; d < nd; ++d)
+    if(r.significance[ei(r.dual_edges[d])] >= threshold) { kept[d] = 1; ++nkept; }
+  if(nkept == 0 && nd > 0)
+  {
+    // Genus 0 with a tolerance close to 1/2: keep the most significant dual
+    // edge, so that K is one slit and the cut surface still a disk.
+    std::size_t best = 0;
+    for(std::size_t d = 1; d < nd; ++d)
+      if(r.significance[ei(r.dual_edges[d])] > r.significance[ei(r.dual_edges[best])]) best = d;
+    kept[best] = 1;
+    nkept = 1;
+    st.fallback_single_rung = true;
+  }
+  std::vector<unsigned char> kept_degree(nf, 0);
+  for(std::size_t d = 0; d < nd; ++d)
+    if(kept[d])
+    {
+      r.edge_role[ei(r.dual_edges[d])] = Edge_role::dual_kept;
+      r.kept_dual_edges.push_back(r.dual_edges[d]);
+      ++kept_degree[dual_faces_of[d][0]];
+      ++kept_degree[dual_faces_of[d][1]];
+    }
+  st.number_of_kept_dual_edges = nkept;
+  for(std::size_t f = 0; f < nf; ++f) st.number_of_kept_dual_leaves += (kept_degree[f] == 1);
+
+  // 3a. The rungs (mesh edges crossed by kept dual edges) reduced to a
+  //     maximum-significance spanning tree (Kruskal).
+  std::vector<std::size_t> rungs;
+  for(std::size_t d = 0; d < nd; ++d) if(kept[d]) rungs.push_back(d);
+  std::stable_sort(rungs.begin(), rungs.end(), [&](std::size_t a, std::size_t b) {
+    return r.significance[ei(r.dual_edges[a])] > r.significance[ei(r.dual_edges[b])];
+  });
+  r.is_cut_edge.assign(ne, 0);
+  std::vector<std::size_t> cut_degree(nv, 0);
+  auto add_cut = [&](std::size_t d) {
+    const edge_descriptor e = r.dual_edges[d];
+    r.is_cut_edge[ei(e)] = 1;
+    ++cut_degree[vi(source(e, tm))];
+    ++cut_degree[vi(target(e, tm))];
+  };
+  {
+    Union_find uf(nv);
+    for(std::size_t d : rungs)
+    {
+      const edge_descriptor e = r.dual_edges[d];
+      if(uf.unite(vi(source(e, tm)), vi(target(e, tm)))) add_cut(d);
+    }
+  }
+
+  // 3b. Genus g: add back the 2g rungs that close the non-contractible cycles.
+  //     A rung may be added iff the faces stay connected across non-cut edges
+  //     (its dual edge is no bridge), i.e. it closes no contractible cycle. The
+  //     candidates that qualify form a cographic matroid, so greedy is optimal,
+  //     and a connected cut surface with Euler characteristic 1 is a disk.
+  if(st.genus > 0)
+  {
+    std::vector<std::size_t> mark(nf, 0);
+    std::size_t stamp = 0;
+    for(std::size_t d : rungs)
+    {
+      if(st.number_of_closing_rungs == static_cast<std::size_t>(2 * st.genus)) break;
+      const edge_descriptor e = r.dual_edges[d];
+      if(r.is_cut_edge[ei(e)]) continue;
+      // Alternating BFS from both faces of e, never crossing K or e: it stops
+      // after O(smaller side) steps when e is a bridge.
+      const std::size_t ma = ++stamp, mb = ++stamp;
+      std::deque<std::size_t> qa{dual_faces_of[d][0]}, qb{dual_faces_of[d][1]};
+      mark[qa.front()] = ma;
+      mark[qb.front()] = mb;
+      bool joined = false;
+      auto step = [&](std::deque<std::size_t>& q, std::size_t mine, std::size_t other) {
+        const std::size_t f = q.front();
+        q.pop_front();
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of[f], tm), tm))
+        {
+          const edge_descriptor eh = edge(h, tm);
+          if(r.is_cut_edge[ei(eh)] || eh == e) continue;
+          const std::size_t g = fi(face(opposite(h, tm), tm));
+          if(mark[g] == other) { joined = true; return; }
+          if(mark[g] != mine) { mark[g] = mine; q.push_back(g); }
+        }
+      };
+      while(!joined && !qa.empty() && !qb.empty())
+      {
+        step(qa, ma, mb);
+        if(!joined && !qb.empty()) step(qb, mb, ma);
+      }
+      if(joined)
+      {
+        add_cut(d);
+        ++st.number_of_closing_rungs;
+      }
+    }
+    if(st.number_of_closing_rungs != static_cast<std::size_t>(2 * st.genus))
+      throw Algorithm_error("found " + std::to_string(st.number_of_closing_rungs) +
+                            " of the " + std::to_string(2 * st.genus) +
+                            " rungs closing the non-contractible cycles");
+  }
+
+  // 3c. No teeth: a spanning tree of the rungs keeps every zigzag tooth of the
+  //     strip as a one-edge leaf. A leaf of K is a tooth unless its dual edge is
+  //     the outermost cut rung of its branch of T* (nothing cut further out).
+  //     Removing a leaf of K keeps K connected and the cut surface a disk.
+  {
+    std::vector<char> cut_beyond(nd, 0);
+    std::vector<char> face_has_cut_beyond(nf, 0);
+    for(std::size_t d : peel_order)
+    {
+      const std::size_t c = child_face[d];
+      const std::size_t p = dual_faces_of[d][0] == c ? dual_faces_of[d][1] : dual_faces_of[d][0];
+      cut_beyond[d] = face_has_cut_beyond[c];
+      if(cut_beyond[d] || r.is_cut_edge[ei(r.dual_edges[d])]) face_has_cut_beyond[p] = 1;
+    }
+    for(std::size_t d = 0; d < nd; ++d)
+      if(!peeled[d]) cut_beyond[d] = 1; // a cycle of the 2-core never ends
+    std::vector<std::size_t> dual_index_of_edge(ne, none);
+    for(std::size_t d = 0; d < nd; ++d) dual_index_of_edge[ei(r.dual_edges[d])] = d;
+
+    std::size_t cut_size = 0;
+    for(std::size_t i = 0; i < ne; ++i) cut_size += r.is_cut_edge[i];
+    std::vector<vertex_descriptor> leaves;
+    for(vertex_descriptor v : vertices(tm))
+      if(cut_degree[vi(v)] == 1) leaves.push_back(v);
+    while(!leaves.empty() && cut_size > 1)
+    {
+      const vertex_descriptor w = leaves.back();
+      leaves.pop_back();
+      if(cut_degree[vi(w)] != 1) continue;
+      halfedge_descriptor hw = GT::null_halfedge();
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(w, tm))
+        if(r.is_cut_edge[ei(edge(h, tm))]) { hw = h; break; }
+      const std::size_t d = dual_index_of_edge[ei(edge(hw, tm))];
+      if(!cut_beyond[d]) continue; // the end of a branch: keep it
+      r.is_cut_edge[ei(edge(hw, tm))] = 0;
+      --cut_size;
+      --cut_degree[vi(w)];
+      const vertex_descriptor u = source(hw, tm);
+      if(--cut_degree[vi(u)] == 1) leaves.push_back(u);
+      ++st.number_of_teeth_pruned;
+    }
+  }
+  for(std::size_t i = 0; i < ne; ++i)
+    if(r.is_cut_edge[i]) r.cut_edges.push_back(edge_of[i]);
+  std::sort(r.dual_edges.begin(), r.dual_edges.end(),
+            [&](edge_descriptor a, edge_descriptor b) { return ei(a) < ei(b); });
+  std::sort(r.kept_dual_edges.begin(), r.kept_dual_edges.end(),
+            [&](edge_descriptor a, edge_descriptor b) { return ei(a) < ei(b); });
+  st.time_cut_graph = seconds_since(t0);
+
+  // ---------------------------------------------------------------------------
+  // 4. Check, always: K is connected with cycle rank 2g, the cut surface is
+  //    connected with Euler characteristic 1 (so a disk), the source is off K.
+  t0 = std::chrono::steady_clock::now();
+  {
+    st.number_of_cut_edges = r.cut_edges.size();
+    Union_find kuf(nv);
+    std::size_t split_vertices = 0;
+    for(vertex_descriptor v : vertices(tm))
+    {
+      const std::size_t k = cut_degree[vi(v)];
+      if(k > 0) ++st.number_of_cut_vertices;
+      if(k == 1) ++st.number_of_cut_leaves;
+      if(k > 1) split_vertices += k - 1;
+    }
+    for(edge_descriptor e : r.cut_edges) kuf.unite(vi(source(e, tm)), vi(target(e, tm)));
+    const std::size_t k_components = kuf.number_of_sets() - (nv - st.number_of_cut_vertices);
+    st.cut_cycle_rank = st.number_of_cut_edges + k_components - st.number_of_cut_vertices;
+
+    Union_find fuf(nf);
+    for(edge_descriptor e : edges(tm))
+      if(!r.is_cut_edge[ei(e)])
+      {
+        const halfedge_descriptor h = halfedge(e, tm);
+        fuf.unite(fi(face(h, tm)), fi(face(opposite(h, tm), tm)));
+      }
+    const long cut_chi = static_cast<long>(nv + split_vertices) -
+                         static_cast<long>(ne + st.number_of_cut_edges) + static_cast<long>(nf);
+    bool source_on_cut = false;
+    if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX)
+      source_on_cut = cut_degree[vi(src.vertex)] > 0;
+    else if(src.kind == Geodesic_source<TriangleMesh>::ON_EDGE)
+      source_on_cut = r.is_cut_edge[ei(edge(src.edge_halfedge, tm))] != 0;
+    std::string why;
+    if(r.cut_edges.empty()) why = "the cut graph is empty";
+    else if(k_components != 1) why = "the cut graph has " + std::to_string(k_components) + " components";
+    else if(st.cut_cycle_rank != static_cast<std::size_t>(2 * st.genus))
+      why = "the cut graph has cycle rank " + std::to_string(st.cut_cycle_rank) + ", not 2g = " +
+            std::to_string(2 * st.genus);
+    else if(fuf.number_of_sets() != 1)
+      why = "cutting along K splits the surface into " + std::to_string(fuf.number_of_sets()) + " parts";
+    else if(cut_chi != 1)
+      why = "the cut surface has Euler characteristic " + std::to_string(cut_chi) + ", not 1";
+    else if(source_on_cut)
+      why = "the source lies on the cut";
+    if(!why.empty())
+      throw Algorithm_error("rough cut locus: cutting along K does not give a disk: " + why);
+  }
+  st.time_disk_check = seconds_since(t0);
+  st.time_total = seconds_since(t_start);
+  return r;
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicRidgeRef
+/// Computes the rough cut locus of `source` on the closed triangle mesh `tm`.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`-free
+///         `HalfedgeListGraph` (e.g. `CGAL::Surface_mesh`), closed, connected, manifold.
+/// \param tm the mesh; it is validated first (`Invalid_mesh_error` if not supported)
+/// \param source a vertex of `tm` (`Invalid_source_error` otherwise)
+/// \param np an optional sequence of named parameters:
+///   `Geodesic_ridge::parameters::tolerance(t)` (default 0.025, in [0, 0.5),
+///   else `Invalid_parameter_error`), and CGAL's `vertex_point_map`,
+///   `vertex_index_map`, `edge_index_map`, `face_index_map`.
+/// \post cutting `tm` along `cut_edges` gives one topological disk with the
+///       source strictly inside; `Algorithm_error` is thrown if it ever does not.
+template <class TriangleMesh,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Rough_cut_locus<TriangleMesh>
+compute_rough_cut_locus(const TriangleMesh& tm,
+                        typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
+                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::get_tolerance(np); // a bad parameter is reported before any work
+  validate_triangle_mesh(tm, np);
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  return internal::rough_cut_locus_impl(tm, make_vertex_source(tm, source, vim), np);
+}
+
+/// \ingroup PkgGeodesicRidgeRef
+/// Same, from a surface point given as a `Face_location` (face + barycentric
+/// coordinates in CGAL's order). A location on an edge or a vertex is handled
+/// as such.
+template <class TriangleMesh, class FT,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Rough_cut_locus<TriangleMesh>
+compute_rough_cut_locus(const TriangleMesh& tm,
+                        const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
+                                        std::array<FT, 3> >& source,
+                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  internal::get_tolerance(np);
+  validate_triangle_mesh(tm, np);
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  return internal::rough_cut_locus_impl(tm, make_face_source(tm, source, vpm, fim, vim), np);
+}
+
+/// \ingroup PkgGeodesicRidgeRef
+/// Writes the cut graph K as polylines (`std::vector<Point_3>`) to `out`, one
+/// per chain between vertices of K whose degree is not 2 (closed chains repeat
+/// their first point).
+template <class TriangleMesh, class OutputIterator,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+OutputIterator cut_graph_polylines(const TriangleMesh& tm, const Rough_cut_locus<TriangleMesh>& rcl,
+                                   OutputIterator out,
+                                   const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  std::vector<vertex_descriptor> vertex_of(num_vertices(tm));
+  for(vertex_descriptor v : vertices(tm)) vertex_of[get(vim, v)] = v;
+  std::vector<std::pair<std::size_t, std::size_t> > graph;
+  for(const auto& e : rcl.cut_edges)
+    graph.emplace_back(get(vim, source(e, tm)), get(vim, target(e, tm)));
+  typedef typename boost::property_traits<decltype(vpm)>::value_type Point;
+  for(const auto& chain : internal::graph_to_chains(num_vertices(tm), graph))
+  {
+    std::vector<Point> polyline;
+    for(std::size_t v : chain) polyline.push_back(get(vpm, vertex_of[v]));
+    *out++ = polyline;
+  }
+  return out;
+}
+
+} // namespace Geodesic_ridge
+
+#endif // GEODESIC_RIDGE_ROUGH_CUT_LOCUS_H

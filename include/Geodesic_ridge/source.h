@@ -1,0 +1,180 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// The geodesic source: a mesh vertex or a surface point (`Face_location`),
+// validated and turned into what the stages need (Dijkstra seeds, the faces
+// that hold the source).
+#ifndef GEODESIC_RIDGE_SOURCE_H
+#define GEODESIC_RIDGE_SOURCE_H
+
+#include <Geodesic_ridge/exceptions.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace Geodesic_ridge {
+
+/// \ingroup PkgGeodesicRidgeRef
+/// Where the source lies, after validation. A `Face_location` whose
+/// barycentric coordinates put it on a vertex or an edge is classified as such,
+/// because the cut must avoid exactly that vertex or edge.
+template <class TriangleMesh>
+struct Geodesic_source
+{
+  typedef boost::graph_traits<TriangleMesh>                 GT;
+  typedef typename GT::vertex_descriptor                   vertex_descriptor;
+  typedef typename GT::face_descriptor                     face_descriptor;
+  typedef typename GT::halfedge_descriptor                 halfedge_descriptor;
+
+  enum Kind { ON_VERTEX, ON_EDGE, IN_FACE };
+
+  Kind kind = ON_VERTEX;
+  /// the source vertex (`ON_VERTEX` only)
+  vertex_descriptor vertex;
+  /// the halfedge the source lies on (`ON_EDGE` only)
+  halfedge_descriptor edge_halfedge;
+  /// the faces whose interior or interior edge holds the source (none for `ON_VERTEX`)
+  std::vector<face_descriptor> faces;
+  /// Dijkstra seeds: vertices with their exact straight-line distance to the source
+  /// (a straight segment inside one face or across the source's edge is a geodesic)
+  std::vector<std::pair<vertex_descriptor, double> > seeds;
+  /// the source as a face location (barycentric coordinates in CGAL's order)
+  std::pair<face_descriptor, std::array<double, 3> > location;
+};
+
+namespace internal {
+
+template <class VPM, class Key>
+double distance_between(const VPM& vpm, const Key& a, const Key& b)
+{
+  const auto& p = get(vpm, a);
+  const auto& q = get(vpm, b);
+  const double dx = p.x() - q.x(), dy = p.y() - q.y(), dz = p.z() - q.z();
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+} // namespace internal
+
+/// Makes a source at vertex `v`. Throws `Invalid_source_error` if `v` is not a vertex of `tm`.
+template <class TriangleMesh, class VertexIndexMap>
+Geodesic_source<TriangleMesh>
+make_vertex_source(const TriangleMesh& tm,
+                   typename boost::graph_traits<TriangleMesh>::vertex_descriptor v,
+                   const VertexIndexMap& vim)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  const std::size_t n = num_vertices(tm);
+  bool found = false;
+  if(v != GT::null_vertex())
+  {
+    const std::size_t i = static_cast<std::size_t>(get(vim, v));
+    found = (i < n);
+  }
+  if(!found || halfedge(v, tm) == GT::null_halfedge())
+    throw Invalid_source_error("source vertex is not a vertex of the mesh (the mesh has " +
+                               std::to_string(n) + " vertices)");
+  Geodesic_source<TriangleMesh> s;
+  s.kind = Geodesic_source<TriangleMesh>::ON_VERTEX;
+  s.vertex = v;
+  s.seeds.emplace_back(v, 0.0);
+  // the location: in the face of halfedge(v), v is the target of that halfedge
+  typename GT::halfedge_descriptor h = halfedge(v, tm);
+  if(face(h, tm) == GT::null_face()) h = opposite(h, tm);
+  const typename GT::face_descriptor f = face(h, tm);
+  s.location.first = f;
+  s.location.second = {0., 0., 0.};
+  int k = 0;
+  for(typename GT::halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+  {
+    if(source(g, tm) == v) s.location.second[k] = 1.;
+    ++k;
+  }
+  return s;
+}
+
+/// Makes a source at a surface point given by a face and barycentric
+/// coordinates ordered as `source(halfedge(f))`, `target(halfedge(f))`,
+/// `target(next(halfedge(f)))` (CGAL's `Face_location`). Throws
+/// `Invalid_source_error` if the face is not in `tm` or the coordinates are
+/// not finite, negative, or do not sum to 1 (within 1e-9).
+template <class TriangleMesh, class FT, class VertexPointMap, class FaceIndexMap, class VertexIndexMap>
+Geodesic_source<TriangleMesh>
+make_face_source(const TriangleMesh& tm,
+                 const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
+                                 std::array<FT, 3> >& loc,
+                 const VertexPointMap& vpm, const FaceIndexMap& fim, const VertexIndexMap& vim)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  const std::size_t nf = num_faces(tm);
+  const typename GT::face_descriptor f = loc.first;
+  if(f == GT::null_face() || static_cast<std::size_t>(get(fim, f)) >= nf)
+    throw Invalid_source_error("source face is not a face of the mesh (the mesh has " +
+                               std::to_string(nf) + " faces)");
+  std::array<double, 3> w;
+  double sum = 0;
+  for(int i = 0; i < 3; ++i)
+  {
+    w[i] = CGAL::to_double(loc.second[i]);
+    if(!std::isfinite(w[i]) || w[i] < 0)
+      throw Invalid_source_error("source barycentric coordinates must be finite and non-negative");
+    sum += w[i];
+  }
+  if(!(std::abs(sum - 1.0) <= 1e-9))
+    throw Invalid_source_error("source barycentric coordinates must sum to 1");
+
+  const halfedge_descriptor h0 = halfedge(f, tm);
+  const std::array<halfedge_descriptor, 3> hs = {h0, next(h0, tm), next(next(h0, tm), tm)};
+  // corner i is source(hs[i]); the edge opposite corner i is hs[(i+1)%3]
+  std::array<vertex_descriptor, 3> c = {source(hs[0], tm), source(hs[1], tm), source(hs[2], tm)};
+  int zeros = 0;
+  for(int i = 0; i < 3; ++i) zeros += (w[i] == 0.);
+  if(zeros == 2)
+  {
+    for(int i = 0; i < 3; ++i)
+      if(w[i] != 0.) return make_vertex_source(tm, c[i], vim);
+  }
+
+  Geodesic_source<TriangleMesh> s;
+  s.location.first = f;
+  s.location.second = w;
+  const auto& p0 = get(vpm, c[0]);
+  const auto& p1 = get(vpm, c[1]);
+  const auto& p2 = get(vpm, c[2]);
+  const double px = w[0] * p0.x() + w[1] * p1.x() + w[2] * p2.x();
+  const double py = w[0] * p0.y() + w[1] * p1.y() + w[2] * p2.y();
+  const double pz = w[0] * p0.z() + w[1] * p1.z() + w[2] * p2.z();
+  auto dist_to = [&](vertex_descriptor v) {
+    const auto& q = get(vpm, v);
+    const double dx = q.x() - px, dy = q.y() - py, dz = q.z() - pz;
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+  };
+  s.faces.push_back(f);
+  for(int i = 0; i < 3; ++i) s.seeds.emplace_back(c[i], dist_to(c[i]));
+  if(zeros == 0)
+  {
+    s.kind = Geodesic_source<TriangleMesh>::IN_FACE;
+    return s;
+  }
+  // On the edge opposite the corner with zero weight: the face across it holds the
+  // source too, and its far corner is reached by a straight segment in that face.
+  int zi = 0;
+  for(int i = 0; i < 3; ++i) if(w[i] == 0.) zi = i;
+  const halfedge_descriptor he = hs[(zi + 1) % 3];
+  s.kind = Geodesic_source<TriangleMesh>::ON_EDGE;
+  s.edge_halfedge = he;
+  const halfedge_descriptor ho = opposite(he, tm);
+  s.faces.push_back(face(ho, tm));
+  s.seeds.emplace_back(target(next(ho, tm), tm), dist_to(target(next(ho, tm), tm)));
+  return s;
+}
+
+} // namespace Geodesic_ridge
+
+#endif // GEODESIC_RIDGE_SOURCE_H

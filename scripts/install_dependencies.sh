@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs the Debian packages Geodesic_ridge needs, when run as root; otherwise
+# prints the one apt-get line to run. Exit status 0 iff everything is there.
+set -euo pipefail
+packages=(g++ make cmake libcgal-dev libboost-graph-dev libgmp-dev libmpfr-dev catch2 libeigen3-dev ccache)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+if [ "$(id -u)" -eq 0 ]; then
+  echo "installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+else
+  echo "missing Debian packages; run:" >&2
+  echo "  sudo apt-get install -y ${missing[*]}" >&2
+  exit 1
+fi

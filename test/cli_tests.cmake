@@ -1,0 +1,56 @@
+# Command-line tests of geodesic_ridge: bad input must give a one-line error
+# and a non-zero exit; good input must write a valid rough cut.
+if(NOT TARGET geodesic_ridge)
+  return()
+endif()
+set(CLI $<TARGET_FILE:geodesic_ridge>)
+set(D ${GEODESIC_RIDGE_SOURCE_DIR}/data)
+set(B ${CMAKE_CURRENT_SOURCE_DIR}/cli/data)
+
+function(cli_failure name expect)
+  add_test(NAME cli.error.${name}
+           COMMAND ${CMAKE_COMMAND} "-DEXPECT=${expect}" "-DCOMMAND=${ARGN}"
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_failure.cmake)
+endfunction()
+
+cli_failure(no_arguments          "missing the MESH argument" ${CLI})
+cli_failure(missing_source        "missing the source" ${CLI} ${D}/torus_1k.off)
+cli_failure(unknown_option        "unknown option '--frobnicate'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --frobnicate)
+cli_failure(option_without_value  "option --tolerance needs a value" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance)
+cli_failure(two_sources           "one source only" ${CLI} ${D}/torus_1k.off --source-vertex 0 --source-vertex 1)
+cli_failure(missing_file          "no_such_mesh.off" ${CLI} ${B}/no_such_mesh.off --source-vertex 0)
+cli_failure(garbage_file          "garbage.off" ${CLI} ${B}/garbage.off --source-vertex 0)
+cli_failure(truncated_file        "truncated" ${CLI} ${B}/truncated.off --source-vertex 0)
+cli_failure(open_mesh             "boundary" ${CLI} ${B}/open_triangle.off --source-vertex 0)
+cli_failure(nan_coordinate        "(NaN|nan|finite|malformed|cannot read)" ${CLI} ${B}/nan_coordinate.off --source-vertex 0)
+cli_failure(non_triangle          "4 vertices" ${CLI} ${B}/quads.off --source-vertex 0)
+cli_failure(source_out_of_range   "source vertex 500 is out of range" ${CLI} ${D}/torus_1k.off --source-vertex 500)
+cli_failure(source_not_a_number   "source vertex 'abc' is not a non-negative integer" ${CLI} ${D}/torus_1k.off --source-vertex abc)
+cli_failure(source_negative       "source vertex '-1' is not a non-negative integer" ${CLI} ${D}/torus_1k.off --source-vertex -1)
+cli_failure(source_face_range     "source face 1000 is out of range" ${CLI} ${D}/torus_1k.off --source-point 1000 0 0 0)
+cli_failure(source_point_off_face "is not on face 0" ${CLI} ${D}/torus_1k.off --source-point 0 100 100 100)
+cli_failure(source_point_nan      "source x 'nan' is not a finite number" ${CLI} ${D}/torus_1k.off --source-point 0 nan 0 0)
+cli_failure(tolerance_too_large   "tolerance 0.5.* out of range" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance 0.5)
+cli_failure(tolerance_negative    "out of range" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance -0.01)
+cli_failure(tolerance_not_number  "tolerance 'x1' is not a finite number" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance x1)
+cli_failure(tolerance_nan         "tolerance 'nan' is not a finite number" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance nan)
+cli_failure(unwritable_output     "cannot open" ${CLI} ${D}/torus_1k.off --source-vertex 0 --rough-cut /nonexistent-dir/x.txt)
+
+# Good input: every bundled mesh, from a vertex and from a surface point.
+set(OUTDIR ${CMAKE_CURRENT_BINARY_DIR}/cli_out)
+foreach(mesh_genus bunny_1k:0 armadillo_2k:0 torus_1k:1 knot_3k:1 eight:2 3holes_7k:3)
+  string(REPLACE ":" ";" mg ${mesh_genus})
+  list(GET mg 0 mesh)
+  list(GET mg 1 genus)
+  foreach(source "--source-vertex;0" "--source-vertex;17")
+    string(REPLACE ";" "_" tag "${source}")
+    add_test(NAME cli.rough_cut.${mesh}${tag}
+             COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/${mesh}.off "-DSOURCE=${source}"
+                     -DOUT=${OUTDIR} -DGENUS=${genus} -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
+  endforeach()
+endforeach()
+# a surface point: the centroid of face 0 of torus_1k
+add_test(NAME cli.rough_cut.torus_1k_source_point
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off
+                 "-DSOURCE=--source-point;0;1.3573468999999998;0.7423328699999999;1.4680988666666668" -DOUT=${OUTDIR} -DGENUS=1
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)

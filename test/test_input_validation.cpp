@@ -1,0 +1,717 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// Tests of mesh input: validate_triangle_soup, validate_triangle_mesh and
+// read_triangle_mesh. Every rule of the validation is exercised through OFF,
+// OBJ and PLY files written into a temporary directory, through the soup
+// function, and through a Surface_mesh where a halfedge structure can
+// represent the defect.
+#include <Geodesic_ridge/IO/read_triangle_mesh.h>
+#include <Geodesic_ridge/mesh_validation.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Catch::Matchers::Contains;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point_3 = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point_3>;
+using Geodesic_ridge::Invalid_mesh_error;
+using Geodesic_ridge::Mesh_file_error;
+
+const double nan_value = std::numeric_limits<double>::quiet_NaN();
+const double inf_value = std::numeric_limits<double>::infinity();
+
+// ---------------------------------------------------------------------------
+// Helpers
+
+// A unique temporary directory, removed at the end of the test.
+class Temp_dir
+{
+  fs::path m_path;
+
+public:
+  Temp_dir()
+  {
+    static std::atomic<int> counter{0};
+    m_path = fs::temp_directory_path() /
+             ("geodesic_ridge_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    fs::create_directories(m_path);
+  }
+  ~Temp_dir()
+  {
+    std::error_code ec;
+    fs::remove_all(m_path, ec);
+  }
+  std::string file(const std::string& name) const { return (m_path / name).string(); }
+  std::string write(const std::string& name, const std::string& content) const
+  {
+    std::ofstream out(file(name), std::ios::binary);
+    out << content;
+    return file(name);
+  }
+};
+
+// A soup that may be invalid in any way (signed indices, NaN coordinates).
+struct Soup
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<long long>> faces;
+
+  std::vector<Point_3> cgal_points() const
+  {
+    std::vector<Point_3> result;
+    for(const auto& p : points)
+      result.emplace_back(p[0], p[1], p[2]);
+    return result;
+  }
+  std::vector<std::vector<std::size_t>> cgal_faces() const
+  {
+    std::vector<std::vector<std::size_t>> result;
+    for(const auto& f : faces)
+      result.emplace_back(f.begin(), f.end());
+    return result;
+  }
+};
+
+std::string number(double x)
+{
+  std::ostringstream out;
+  out << std::setprecision(17) << x; // NaN and infinity print as "nan" and "inf"
+  return out.str();
+}
+
+std::string to_off(const Soup& s)
+{
+  std::ostringstream out;
+  out << "OFF\n" << s.points.size() << " " << s.faces.size() << " 0\n";
+  for(const auto& p : s.points)
+    out << number(p[0]) << " " << number(p[1]) << " " << number(p[2]) << "\n";
+  for(const auto& f : s.faces)
+  {
+    out << f.size();
+    for(long long i : f)
+      out << " " << i;
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string to_obj(const Soup& s)
+{
+  std::ostringstream out;
+  out << "# written by test_input_validation\n";
+  for(const auto& p : s.points)
+    out << "v " << number(p[0]) << " " << number(p[1]) << " " << number(p[2]) << "\n";
+  for(const auto& f : s.faces)
+  {
+    out << "f";
+    for(long long i : f)
+      out << " " << i + 1;
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string ply_header(const Soup& s, const char* format)
+{
+  std::ostringstream out;
+  out << "ply\nformat " << format << " 1.0\nelement vertex " << s.points.size()
+      << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << s.faces.size()
+      << "\nproperty list uchar int vertex_indices\nend_header\n";
+  return out.str();
+}
+
+std::string to_ply(const Soup& s)
+{
+  std::ostringstream out;
+  out << ply_header(s, "ascii");
+  for(const auto& p : s.points)
+    out << number(p[0]) << " " << number(p[1]) << " " << number(p[2]) << "\n";
+  for(const auto& f : s.faces)
+  {
+    out << f.size();
+    for(long long i : f)
+      out << " " << i;
+    out << "\n";
+  }
+  return out.str();
+}
+
+// Binary little-endian PLY: the only format in which a NaN coordinate reaches
+// the validation through CGAL's reader (its ASCII parsers reject "nan").
+std::string to_binary_ply(const Soup& s)
+{
+  std::string out = ply_header(s, "binary_little_endian");
+  auto append = [&](const void* data, std::size_t n) {
+    const char* bytes = static_cast<const char*>(data);
+    out.append(bytes, n); // the test machines are little-endian (x86-64)
+  };
+  for(const auto& p : s.points)
+    for(double x : p)
+      append(&x, sizeof x);
+  for(const auto& f : s.faces)
+  {
+    const std::uint8_t n = static_cast<std::uint8_t>(f.size());
+    append(&n, 1);
+    for(long long i : f)
+    {
+      const std::int32_t i32 = static_cast<std::int32_t>(i);
+      append(&i32, 4);
+    }
+  }
+  return out;
+}
+
+// The message of the exception of type E thrown by f; fails the test if f
+// throws nothing or another type.
+template <class E, class F>
+std::string message_of(F&& f)
+{
+  try
+  {
+    f();
+  }
+  catch(const E& e)
+  {
+    return e.what();
+  }
+  catch(const std::exception& e)
+  {
+    FAIL("expected another exception type, got: " << e.what());
+  }
+  FAIL("no exception thrown");
+  return {};
+}
+
+bool is_one_line(const std::string& s) { return !s.empty() && s.find('\n') == std::string::npos; }
+
+// Checks that reading `s` from OFF, OBJ and PLY files, and validating it as a
+// soup, all throw Invalid_mesh_error with a message containing `needle`.
+// `ascii_ply` false writes the PLY file in binary (see rule 5).
+void check_invalid_everywhere(const Soup& s, const std::string& needle, bool ascii_ply = true)
+{
+  Temp_dir dir;
+  const std::vector<std::pair<std::string, std::string>> files = {
+    {"mesh.off", to_off(s)}, {"mesh.obj", to_obj(s)}, {"mesh.ply", ascii_ply ? to_ply(s) : to_binary_ply(s)}};
+  for(const auto& file : files)
+  {
+    INFO("file " << file.first << ":\n" << file.second);
+    const std::string path = dir.write(file.first, file.second);
+    Mesh tm;
+    const std::string msg = message_of<Invalid_mesh_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(path, tm); });
+    CHECK_THAT(msg, Contains(needle));
+    CHECK_THAT(msg, Contains(file.first));
+    CHECK(is_one_line(msg));
+  }
+  const std::string msg = message_of<Invalid_mesh_error>(
+    [&] { Geodesic_ridge::validate_triangle_soup(s.cgal_points(), s.cgal_faces()); });
+  CHECK_THAT(msg, Contains(needle));
+  CHECK(is_one_line(msg));
+}
+
+// Builds a Surface_mesh face by face; false if a face cannot be added.
+bool build_mesh(const Soup& s, Mesh& tm)
+{
+  tm.clear();
+  for(const auto& p : s.points)
+    tm.add_vertex(Point_3(p[0], p[1], p[2]));
+  for(const auto& f : s.faces)
+  {
+    std::vector<Mesh::Vertex_index> vs;
+    for(long long i : f)
+      vs.push_back(Mesh::Vertex_index(static_cast<Mesh::size_type>(i)));
+    if(tm.add_face(vs) == Mesh::null_face())
+      return false;
+  }
+  return true;
+}
+
+void check_invalid_surface_mesh(const Soup& s, const std::string& needle)
+{
+  Mesh tm;
+  REQUIRE(build_mesh(s, tm));
+  const std::string msg = message_of<Invalid_mesh_error>([&] { Geodesic_ridge::validate_triangle_mesh(tm); });
+  CHECK_THAT(msg, Contains(needle));
+  CHECK(is_one_line(msg));
+}
+
+// A closed, consistently oriented tetrahedron.
+Soup tetrahedron(double shift = 0)
+{
+  Soup s;
+  s.points = {{shift, 0, 0}, {shift + 1, 0, 0}, {shift, 1, 0}, {shift, 0, 1}};
+  s.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  return s;
+}
+
+// Appends `b` to `a`, renumbering its vertices.
+Soup merged(Soup a, const Soup& b)
+{
+  const long long offset = static_cast<long long>(a.points.size());
+  a.points.insert(a.points.end(), b.points.begin(), b.points.end());
+  for(auto f : b.faces)
+  {
+    for(long long& i : f)
+      i += offset;
+    a.faces.push_back(f);
+  }
+  return a;
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------
+// A valid mesh, in every format
+
+TEST_CASE("a closed tetrahedron reads and validates in OFF, OBJ and PLY", "[input]")
+{
+  const Soup s = tetrahedron();
+  Temp_dir dir;
+  for(const std::string& path : {dir.write("t.off", to_off(s)), dir.write("t.obj", to_obj(s)),
+                                 dir.write("t.ply", to_ply(s)), dir.write("t.bin.ply", to_binary_ply(s)),
+                                 dir.write("T.OFF", to_off(s))})
+  {
+    INFO(path);
+    Mesh tm;
+    REQUIRE_NOTHROW(Geodesic_ridge::IO::read_triangle_mesh(path, tm));
+    CHECK(tm.number_of_vertices() == 4);
+    CHECK(tm.number_of_faces() == 4);
+    CHECK_NOTHROW(Geodesic_ridge::validate_triangle_mesh(tm));
+  }
+  CHECK_NOTHROW(Geodesic_ridge::validate_triangle_soup(s.cgal_points(), s.cgal_faces()));
+}
+
+// ---------------------------------------------------------------------------
+// One test case per rule, in the order the rules are checked
+
+TEST_CASE("rule 1: an empty mesh is rejected", "[input][validation]")
+{
+  Soup no_face = tetrahedron();
+  no_face.faces.clear();
+  check_invalid_everywhere(no_face, "mesh is empty");
+  check_invalid_everywhere(Soup{}, "mesh is empty");
+
+  Mesh tm;
+  CHECK_THAT(message_of<Invalid_mesh_error>([&] { Geodesic_ridge::validate_triangle_mesh(tm); }),
+             Contains("mesh is empty (0 vertices, 0 faces)"));
+}
+
+TEST_CASE("rule 2: a face that is not a triangle is rejected, not triangulated", "[input][validation]")
+{
+  // A square pyramid: a closed mesh whose base (face 0) is a quad.
+  Soup s;
+  s.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 1}};
+  s.faces = {{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+  check_invalid_everywhere(s, "face 0 has 4 vertices; only triangle meshes are supported");
+  check_invalid_surface_mesh(s, "face 0 has 4 vertices; only triangle meshes are supported");
+}
+
+TEST_CASE("rule 3: a face index out of range is rejected", "[input][validation]")
+{
+  Soup s = tetrahedron();
+  s.faces[3] = {1, 2, 7};
+  check_invalid_everywhere(s, "face 3 refers to vertex 7, out of range (the mesh has 4 vertices");
+
+  SECTION("one past the end (CGAL's OBJ reader lets it through)")
+  {
+    s.faces[3] = {1, 2, 4};
+    check_invalid_everywhere(s, "face 3 refers to vertex 4");
+  }
+  SECTION("a negative index in a soup of signed integers")
+  {
+    std::vector<std::vector<int>> faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, -1}};
+    CHECK_THAT(message_of<Invalid_mesh_error>(
+                 [&] { Geodesic_ridge::validate_triangle_soup(s.cgal_points(), faces); }),
+               Contains("face 3 refers to vertex -1"));
+  }
+}
+
+TEST_CASE("rule 4: a face repeating a vertex is rejected", "[input][validation]")
+{
+  Soup s = tetrahedron();
+  s.faces[3] = {1, 2, 2};
+  check_invalid_everywhere(s, "face 3 repeats vertex 2");
+}
+
+TEST_CASE("rule 5: a non-finite coordinate is rejected", "[input][validation]")
+{
+  for(double bad : {nan_value, inf_value, -inf_value})
+  {
+    INFO("bad coordinate " << bad);
+    Soup s = tetrahedron();
+    s.points[2][1] = bad;
+    // OFF and OBJ: CGAL's readers reject the token as malformed; the re-read
+    // names the vertex. PLY: only binary PLY can carry the value through
+    // CGAL's reader (its ASCII parser rejects "nan" and "inf": see the PLY
+    // file errors), and the validation rejects it.
+    check_invalid_everywhere(s, "vertex 2 has a non-finite coordinate", false);
+    check_invalid_surface_mesh(s, "vertex 2 has a non-finite coordinate");
+  }
+  SECTION("an overflowing coordinate in a text file is infinite")
+  {
+    Temp_dir dir;
+    std::string off = to_off(tetrahedron());
+    off.replace(off.find("\n0 1 0\n"), 7, "\n0 1e400 0\n");
+    const std::string path = dir.write("huge.off", off);
+    Mesh tm;
+    CHECK_THAT(message_of<Invalid_mesh_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(path, tm); }),
+               Contains("vertex 2 has a non-finite coordinate"));
+  }
+  SECTION("the vertex_point_map named parameter is the one checked")
+  {
+    Mesh tm;
+    REQUIRE(build_mesh(tetrahedron(), tm));
+    auto alt = tm.add_property_map<Mesh::Vertex_index, Point_3>("v:alternative").first;
+    for(auto v : tm.vertices())
+      alt[v] = tm.point(v);
+    alt[Mesh::Vertex_index(3)] = Point_3(0, nan_value, 1);
+    CHECK_NOTHROW(Geodesic_ridge::validate_triangle_mesh(tm));
+    CHECK_THAT(message_of<Invalid_mesh_error>([&] {
+                 Geodesic_ridge::validate_triangle_mesh(tm, CGAL::parameters::vertex_point_map(alt));
+               }),
+               Contains("vertex 3 has a non-finite coordinate"));
+  }
+}
+
+TEST_CASE("rule 6: an isolated vertex is rejected", "[input][validation]")
+{
+  Soup s = tetrahedron();
+  s.points.push_back({5, 5, 5});
+  check_invalid_everywhere(s, "vertex 4 is isolated (used by no face)");
+  check_invalid_surface_mesh(s, "vertex 4 is isolated (used by no face)");
+
+  SECTION("a removed (garbage) vertex of a Surface_mesh is not isolated")
+  {
+    Mesh tm;
+    REQUIRE(build_mesh(s, tm));
+    tm.remove_vertex(Mesh::Vertex_index(4));
+    CHECK_NOTHROW(Geodesic_ridge::validate_triangle_mesh(tm));
+  }
+}
+
+TEST_CASE("rule 7: two faces on the same three vertices are rejected", "[input][validation]")
+{
+  Soup s = tetrahedron();
+  s.faces.push_back({0, 1, 2}); // face 0 with the other orientation
+  check_invalid_everywhere(s, "faces 0 and 4 are duplicates (both on vertices 0, 1, 2)");
+
+  // A halfedge structure can glue two opposite triangles into a closed "pillow".
+  Soup pillow;
+  pillow.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  pillow.faces = {{0, 1, 2}, {0, 2, 1}};
+  check_invalid_surface_mesh(pillow, "faces 0 and 1 are duplicates");
+}
+
+TEST_CASE("rule 8: an edge shared by three faces is rejected", "[input][validation]")
+{
+  Soup s = tetrahedron();
+  s.points.push_back({0.5, -1, 0.5});
+  s.faces.push_back({0, 1, 4}); // a fin on edge 0-1
+  check_invalid_everywhere(s, "edge 0-1 is non-manifold: it is shared by 3 faces");
+}
+
+TEST_CASE("rule 9: a boundary edge is rejected", "[input][validation]")
+{
+  Soup s = tetrahedron();
+  s.faces.pop_back(); // remove face 3 = (1, 2, 3)
+  check_invalid_everywhere(s, "mesh has 3 boundary edges (first: vertices 2-1 of face 0); only closed meshes are supported");
+  check_invalid_surface_mesh(s, "mesh has 3 boundary edges");
+}
+
+TEST_CASE("rule 10: an inconsistent orientation is rejected", "[input][validation]")
+{
+  Soup s = tetrahedron();
+  s.faces[3] = {1, 3, 2}; // flipped
+  check_invalid_everywhere(s, "faces 0 and 3 are inconsistently oriented (both traverse edge 2->1");
+}
+
+TEST_CASE("rule 11: a non-manifold vertex is rejected", "[input][validation]")
+{
+  // Two tetrahedra touching at vertex 0: closed, oriented, edge-manifold, one
+  // component, but the faces around vertex 0 form two fans.
+  Soup s = tetrahedron();
+  Soup other;
+  other.points = {{-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+  other.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  for(auto& f : other.faces)
+    for(long long& i : f)
+      i = (i == 0) ? 0 : i + 3;
+  s.points.insert(s.points.end(), other.points.begin(), other.points.end());
+  s.faces.insert(s.faces.end(), other.faces.begin(), other.faces.end());
+  check_invalid_everywhere(s, "vertex 0 is non-manifold (its faces form 2 separate fans)");
+
+  // Not through a Surface_mesh: Surface_mesh::add_face refuses to close a
+  // second fan at a vertex (checked), so a pinched vertex cannot be built.
+}
+
+TEST_CASE("rule 12: several connected components are rejected", "[input][validation]")
+{
+  const Soup s = merged(merged(tetrahedron(), tetrahedron(5)), tetrahedron(10));
+  check_invalid_everywhere(s, "mesh has 3 connected components; only one is supported");
+  check_invalid_surface_mesh(s, "mesh has 3 connected components; only one is supported");
+}
+
+TEST_CASE("rule 13: a face with exactly collinear corners is rejected, with no epsilon", "[input][validation]")
+{
+  Soup s = tetrahedron();
+  s.points[3] = {2, 0, 0}; // on the line of vertices 0 and 1: face 1 = (0, 1, 3) is flat
+  check_invalid_everywhere(s, "face 1 is degenerate (its corners are collinear)");
+  check_invalid_surface_mesh(s, "face 1 is degenerate (its corners are collinear)");
+
+  // Nearly collinear is not collinear: the predicate is exact.
+  s.points[3] = {2, 1e-200, 0};
+  CHECK_NOTHROW(Geodesic_ridge::validate_triangle_soup(s.cgal_points(), s.cgal_faces()));
+  Temp_dir dir;
+  Mesh tm;
+  CHECK_NOTHROW(Geodesic_ridge::IO::read_triangle_mesh(dir.write("thin.off", to_off(s)), tm));
+}
+
+// ---------------------------------------------------------------------------
+// File errors
+
+TEST_CASE("file errors: missing file, unsupported extension, directory", "[input][file]")
+{
+  Temp_dir dir;
+  Mesh tm;
+  CHECK_THAT(message_of<Mesh_file_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(dir.file("none.off"), tm); }),
+             Contains("none.off: cannot open the file (No such file or directory)"));
+  const std::string stl = dir.write("mesh.stl", "solid x\nendsolid x\n");
+  CHECK_THAT(message_of<Mesh_file_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(stl, tm); }),
+             Contains("unsupported extension '.stl'; expected .off, .obj or .ply"));
+  const std::string noext = dir.write("mesh", to_off(tetrahedron()));
+  CHECK_THAT(message_of<Mesh_file_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(noext, tm); }),
+             Contains("no extension"));
+  fs::create_directory(dir.file("folder.off"));
+  CHECK_THAT(message_of<Mesh_file_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(dir.file("folder.off"), tm); }),
+             Contains("is a directory"));
+}
+
+TEST_CASE("file errors: a failed read leaves the mesh untouched", "[input][file]")
+{
+  Temp_dir dir;
+  Mesh tm;
+  REQUIRE(build_mesh(tetrahedron(), tm));
+  Soup open = tetrahedron();
+  open.faces.pop_back();
+  CHECK_THROWS_AS(Geodesic_ridge::IO::read_triangle_mesh(dir.write("open.off", to_off(open)), tm), Invalid_mesh_error);
+  CHECK_THROWS_AS(Geodesic_ridge::IO::read_triangle_mesh(dir.write("bad.off", "OFF\n4 4 0\n0 0\n"), tm), Mesh_file_error);
+  CHECK(tm.number_of_faces() == 4);
+}
+
+TEST_CASE("file errors: malformed or truncated OFF", "[input][file][off]")
+{
+  const std::string good = to_off(tetrahedron());
+  const std::string verts = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  struct Case
+  {
+    const char* name;
+    std::string content;
+    const char* needle;
+  };
+  const std::vector<Case> cases = {
+    {"fewer faces than the header says", "OFF\n4 4 0\n" + verts + "3 0 2 1\n3 0 1 3\n",
+     "file is truncated: the header announces 4 vertices and 4 faces, but it ends after 2 faces"},
+    {"cut in the middle of a face", good.substr(0, good.size() - 3),
+     "line 10: face 3 announces 3 vertices but lists 2"},
+    {"fewer vertices than the header says", "OFF\n4 4 0\n0 0 0\n1 0 0\n",
+     "ends after 2 vertices"},
+    {"a vertex with two coordinates", "OFF\n4 4 0\n0 0 0\n1 0\n0 1 0\n0 0 1\n",
+     "line 4: vertex 1 has 2 coordinate(s), expected 3"},
+    {"a garbage coordinate", "OFF\n4 4 0\n0 0 0\n1 0 foo\n0 1 0\n0 0 1\n",
+     "line 4: vertex 1: 'foo' is not a number"},
+    {"a garbage face index", "OFF\n4 4 0\n" + verts + "3 0 2 x\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+     "line 7: face 0: 'x' is not a vertex index"},
+    {"a negative face index", "OFF\n4 4 0\n" + verts + "3 0 2 -1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+     "line 7: face 0: '-1' is not a vertex index"},
+    {"a bad header keyword", "PFF\n4 4 0\n" + verts, "line 1: expected the OFF header, found 'PFF'"},
+    {"counts without E", "OFF\n4 4\n" + verts, "line 2: expected the OFF counts 'V F E'"},
+    {"an empty file", "", "file is empty (no OFF header)"},
+    {"only the keyword", "OFF\n", "file ends after the OFF keyword"},
+  };
+  Temp_dir dir;
+  for(const Case& c : cases)
+  {
+    INFO(c.name);
+    const std::string path = dir.write("bad.off", c.content);
+    Mesh tm;
+    const std::string msg = message_of<Mesh_file_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(path, tm); });
+    CHECK_THAT(msg, Contains(c.needle));
+    CHECK_THAT(msg, Contains("bad.off"));
+    CHECK(is_one_line(msg));
+  }
+}
+
+TEST_CASE("file errors: malformed OBJ, including what CGAL's reader silently accepts", "[input][file][obj]")
+{
+  const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+  struct Case
+  {
+    const char* name;
+    std::string content;
+    const char* needle;
+  };
+  const std::vector<Case> cases = {
+    // CGAL reads "f 1 3 x" as the 2-gon (1, 3).
+    {"a garbage face token", verts + "f 1 3 x\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
+     "line 5: face 0: 'x' is not a vertex reference"},
+    // CGAL maps 0 to the vertex count so far, i.e. to a vertex defined later.
+    {"the invalid index 0", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 3 0\nv 0 0 1\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
+     "line 4: face 0: '0' is not a vertex reference"},
+    {"a relative index before the first vertex", verts + "f 1 3 -9\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
+     "relative reference -9 points before the first vertex"},
+    {"an unknown statement", verts + "foo bar\n", "line 5: unknown OBJ statement 'foo'"},
+    {"a vertex with two coordinates", "v 0 0 0\nv 1 0\n", "line 2: vertex 1 has 2 coordinate(s), expected 3"},
+    {"a garbage coordinate", "v 0 0 0\nv 1 zero 0\n", "line 2: vertex 1: 'zero' is not a number"},
+  };
+  Temp_dir dir;
+  for(const Case& c : cases)
+  {
+    INFO(c.name);
+    const std::string path = dir.write("bad.obj", c.content);
+    Mesh tm;
+    const std::string msg = message_of<Mesh_file_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(path, tm); });
+    CHECK_THAT(msg, Contains(c.needle));
+    CHECK_THAT(msg, Contains("bad.obj"));
+  }
+  SECTION("a truncated OBJ has no header to compare with: it is an open mesh")
+  {
+    const std::string path = dir.write("cut.obj", verts + "f 1 3 2\nf 1 2 4\n");
+    Mesh tm;
+    CHECK_THAT(message_of<Invalid_mesh_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(path, tm); }),
+               Contains("boundary edges"));
+  }
+  SECTION("texture and normal references are accepted")
+  {
+    const std::string path =
+      dir.write("tex.obj", verts + "vt 0 0\nvn 0 0 1\nf -4 -2 -3\nf 1/1/1 2/1/1 4/1/1\nf 1//1 4//1 3//1\nf 2 3 4\n");
+    Mesh tm;
+    CHECK_NOTHROW(Geodesic_ridge::IO::read_triangle_mesh(path, tm));
+    CHECK(tm.number_of_faces() == 4);
+  }
+}
+
+TEST_CASE("file errors: malformed or truncated PLY", "[input][file][ply]")
+{
+  const Soup s = tetrahedron();
+  const std::string ascii = to_ply(s);
+  const std::string binary = to_binary_ply(s);
+  Soup with_nan = s;
+  with_nan.points[1][2] = nan_value;
+  struct Case
+  {
+    const char* name;
+    std::string content;
+    const char* needle;
+  };
+  const std::vector<Case> cases = {
+    {"ASCII, fewer faces than the header says", ascii.substr(0, ascii.rfind("3 0 3 2")), "malformed or truncated PLY"},
+    {"binary, truncated", binary.substr(0, binary.size() - 5), "malformed or truncated PLY"},
+    {"garbage index", ascii.substr(0, ascii.rfind("3 1 2 3")) + "3 1 x 3\n", "malformed or truncated PLY"},
+    // CGAL's ASCII PLY parser rejects "nan" before the validation can see it.
+    {"ASCII nan", to_ply(with_nan), "malformed or truncated PLY"},
+    {"a header cut short", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n", "malformed or truncated PLY"},
+    {"not a PLY file", to_off(s), "does not start with 'ply'"},
+  };
+  Temp_dir dir;
+  for(const Case& c : cases)
+  {
+    INFO(c.name);
+    const std::string path = dir.write("bad.ply", c.content);
+    Mesh tm;
+    const std::string msg = message_of<Mesh_file_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(path, tm); });
+    CHECK_THAT(msg, Contains(c.needle));
+    CHECK_THAT(msg, Contains("bad.ply"));
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Index order and the repository's meshes
+
+TEST_CASE("vertex i and face j of the file are vertex i and face j of the mesh", "[input][order]")
+{
+  // An octahedron, outward oriented, with shuffled vertices and faces.
+  const std::array<std::array<double, 3>, 6> corners = {
+    {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
+  const std::array<int, 6> file_position = {3, 0, 5, 1, 4, 2}; // corner c is vertex file_position[c]
+  Soup s;
+  s.points.resize(6);
+  for(int c = 0; c < 6; ++c)
+    s.points[file_position[c]] = corners[c];
+  for(int sx : {0, 1})
+    for(int sy : {0, 1})
+      for(int sz : {0, 1})
+      {
+        long long x = file_position[sx], y = file_position[2 + sy], z = file_position[4 + sz];
+        s.faces.push_back((sx + sy + sz) % 2 == 0 ? std::vector<long long>{x, y, z} : std::vector<long long>{x, z, y});
+      }
+  std::swap(s.faces[0], s.faces[5]);
+  std::swap(s.faces[2], s.faces[7]);
+  std::rotate(s.faces[1].begin(), s.faces[1].begin() + 1, s.faces[1].end());
+  REQUIRE_NOTHROW(Geodesic_ridge::validate_triangle_soup(s.cgal_points(), s.cgal_faces()));
+
+  Temp_dir dir;
+  for(const std::string& path : {dir.write("o.off", to_off(s)), dir.write("o.obj", to_obj(s)),
+                                 dir.write("o.ply", to_ply(s)), dir.write("o.bin.ply", to_binary_ply(s))})
+  {
+    INFO(path);
+    Mesh tm;
+    REQUIRE_NOTHROW(Geodesic_ridge::IO::read_triangle_mesh(path, tm));
+    REQUIRE(tm.number_of_vertices() == 6);
+    REQUIRE(tm.number_of_faces() == 8);
+    for(std::size_t i = 0; i < 6; ++i)
+      CHECK(tm.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(i))) ==
+            Point_3(s.points[i][0], s.points[i][1], s.points[i][2]));
+    for(std::size_t j = 0; j < 8; ++j)
+    {
+      // The same cyclic triple, starting anywhere (orientation is preserved).
+      std::vector<long long> around;
+      for(auto v : CGAL::vertices_around_face(tm.halfedge(Mesh::Face_index(static_cast<Mesh::size_type>(j))), tm))
+        around.push_back(static_cast<long long>(v.idx()));
+      REQUIRE(around.size() == 3);
+      const auto& f = s.faces[j];
+      const bool same = (around == f) ||
+                        (around == std::vector<long long>{f[1], f[2], f[0]}) ||
+                        (around == std::vector<long long>{f[2], f[0], f[1]});
+      CHECK(same);
+    }
+  }
+}
+
+TEST_CASE("every mesh of the repository's data directory reads and validates", "[input][data]")
+{
+  const fs::path data_dir(GEODESIC_RIDGE_DATA_DIR);
+  REQUIRE(fs::is_directory(data_dir));
+  std::size_t count = 0;
+  for(const auto& entry : fs::directory_iterator(data_dir))
+  {
+    std::string ext = entry.path().extension().string();
+    if(ext != ".off" && ext != ".obj" && ext != ".ply")
+      continue;
+    INFO(entry.path().string());
+    Mesh tm;
+    REQUIRE_NOTHROW(Geodesic_ridge::IO::read_triangle_mesh(entry.path().string(), tm));
+    CHECK(tm.number_of_faces() > 0);
+    CHECK_NOTHROW(Geodesic_ridge::validate_triangle_mesh(tm));
+    ++count;
+  }
+  CHECK(count > 0);
+}
