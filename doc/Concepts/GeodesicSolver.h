@@ -1,0 +1,35 @@
+/*!
+\ingroup PkgGeodesicRidgeConcepts
+\cgalConcept
+
+A `GeodesicSolver` computes geodesic distances on a triangle mesh from one
+source, for every vertex. It knows nothing of ridges: stage 2 of the pipeline
+runs it on the extended surface, a `CGAL::Surface_mesh` with a boundary, whose
+vertices of cone angle up to 4π (at the ends of the cut) are border vertices.
+
+\cgalHasModel `Geodesic_ridge::Exact_solver` (CGAL `Surface_mesh_shortest_path`)
+
+Planned models: fast marching, heat method (`CGAL::Heat_method_3`), Dijkstra on
+the edge graph (an upper bound, for tests).
+*/
+class GeodesicSolver
+{
+public:
+  /// a short name, used in statistics and on the command line (`--solver NAME`)
+  static const char* name();
+
+  /// Writes the distance from vertex `s` to every vertex `v` of `tm` with `put(distance, v, d)`.
+  /// `VertexDistanceMap` is a writable property map from vertices to `double`.
+  template <class TriangleMesh, class VertexDistanceMap>
+  void operator()(const TriangleMesh& tm,
+                  typename boost::graph_traits<TriangleMesh>::vertex_descriptor s,
+                  VertexDistanceMap distance) const;
+
+  /// Same from a surface point: a face and its barycentric coordinates, in the order
+  /// `source(halfedge(f))`, `target(halfedge(f))`, `target(next(halfedge(f)))`.
+  template <class TriangleMesh, class FT, class VertexDistanceMap>
+  void operator()(const TriangleMesh& tm,
+                  const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
+                                  std::array<FT, 3> >& source,
+                  VertexDistanceMap distance) const;
+};

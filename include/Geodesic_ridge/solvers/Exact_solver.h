@@ -1,0 +1,67 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// The exact geodesic solver: CGAL's Surface_mesh_shortest_path (MMP/Chen-Han
+// style window propagation) on whatever mesh it is given.
+#ifndef GEODESIC_RIDGE_SOLVERS_EXACT_SOLVER_H
+#define GEODESIC_RIDGE_SOLVERS_EXACT_SOLVER_H
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Surface_mesh_shortest_path.h>
+
+#include <array>
+#include <utility>
+
+namespace Geodesic_ridge {
+
+/// \ingroup PkgGeodesicRidgeSolvers
+/// Model of `GeodesicSolver`: exact polyhedral distances by
+/// `CGAL::Surface_mesh_shortest_path` (one sequence tree per call).
+/// Meshes with a boundary are fine: window propagation stops at border edges.
+struct Exact_solver
+{
+  static const char* name() { return "exact"; }
+
+  /// Distances from vertex `s` of `tm` to every vertex, written to `distance`.
+  template <class TriangleMesh, class VertexDistanceMap>
+  void operator()(const TriangleMesh& tm,
+                  typename boost::graph_traits<TriangleMesh>::vertex_descriptor s,
+                  VertexDistanceMap distance) const
+  {
+    SMSP<TriangleMesh> sp(tm);
+    sp.add_source_point(s);
+    solve(tm, sp, distance);
+  }
+
+  /// Distances from the point `loc` (face + barycentric coordinates, CGAL's order).
+  template <class TriangleMesh, class FT, class VertexDistanceMap>
+  void operator()(const TriangleMesh& tm,
+                  const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
+                                  std::array<FT, 3> >& loc,
+                  VertexDistanceMap distance) const
+  {
+    SMSP<TriangleMesh> sp(tm);
+    typename SMSP<TriangleMesh>::Barycentric_coordinates b = {{loc.second[0], loc.second[1], loc.second[2]}};
+    sp.add_source_point(loc.first, b);
+    solve(tm, sp, distance);
+  }
+
+private:
+  template <class TriangleMesh>
+  using Traits = CGAL::Surface_mesh_shortest_path_traits<
+      typename CGAL::Kernel_traits<typename boost::property_traits<typename boost::property_map<
+          TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type>::Kernel,
+      TriangleMesh>;
+  template <class TriangleMesh>
+  using SMSP = CGAL::Surface_mesh_shortest_path<Traits<TriangleMesh> >;
+
+  template <class TriangleMesh, class Solver, class VertexDistanceMap>
+  static void solve(const TriangleMesh& tm, Solver& sp, VertexDistanceMap distance)
+  {
+    sp.build_sequence_tree();
+    for(auto v : vertices(tm)) put(distance, v, CGAL::to_double(sp.shortest_distance_to_source_points(v).first));
+  }
+};
+
+} // namespace Geodesic_ridge
+
+#endif
