@@ -192,14 +192,16 @@ public:
     stats_.faces_per_ring.push_back(nf);
   }
 
-  /// Grows one ring: a copy across every boundary edge of E (one at a time).
-  void grow_ring()
+  /// Grows one ring: a copy across every boundary edge of E (one at a time),
+  /// or only across the boundary edges of the copies `c` with `from[c]` set.
+  void grow_ring(const std::vector<char>* from = nullptr)
   {
     const int r = ++stats_.rings;
     std::vector<std::pair<std::uint32_t, int> > boundary;
     for(std::uint32_t c = 0; c < copies_.size(); ++c)
-      for(int k = 0; k < 3; ++k)
-        if(copies_[c].nb[k] == none) boundary.emplace_back(c, k);
+      if(from == nullptr || (c < from->size() && (*from)[c]))
+        for(int k = 0; k < 3; ++k)
+          if(copies_[c].nb[k] == none) boundary.emplace_back(c, k);
     const std::size_t before = copies_.size();
     for(const auto& [c, k] : boundary)
       if(copies_[c].nb[k] == none) add_copy_across(c, k, r);

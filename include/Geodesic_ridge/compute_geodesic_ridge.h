@@ -1,0 +1,277 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// The whole pipeline: rough cut locus -> extended surface -> geodesic solve ->
+// exact lower envelope per face -> ridge curve. A free function for one-shot
+// use and a result class (`Ridge_curve`) that keeps everything it computed.
+#ifndef GEODESIC_RIDGE_COMPUTE_GEODESIC_RIDGE_H
+#define GEODESIC_RIDGE_COMPUTE_GEODESIC_RIDGE_H
+
+#include <Geodesic_ridge/extended_surface.h>
+#include <Geodesic_ridge/lower_envelope.h>
+#include <Geodesic_ridge/parameters.h>
+#include <Geodesic_ridge/ridge_curve.h>
+#include <Geodesic_ridge/rough_cut_locus.h>
+#include <Geodesic_ridge/solvers/Exact_solver.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace Geodesic_ridge {
+
+namespace internal_np {
+struct solver_t {};
+struct initial_rings_t {};
+struct maximum_rings_t {};
+} // namespace internal_np
+
+namespace parameters {
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// The geodesic solver run on the extended surface, a model of `GeodesicSolver`
+/// (default `Exact_solver`).
+template <class Solver>
+CGAL::Named_function_parameters<Solver, internal_np::solver_t> solver(const Solver& s)
+{
+  return CGAL::Named_function_parameters<Solver, internal_np::solver_t>(s);
+}
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// Extension rings grown everywhere before the first solve (default 3).
+inline CGAL::Named_function_parameters<int, internal_np::initial_rings_t> initial_rings(int k)
+{
+  return CGAL::Named_function_parameters<int, internal_np::initial_rings_t>(k);
+}
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// Hard cap on extension rings (default 8): rings beyond the initial ones grow
+/// only where copies of the outermost ring still win area of their face.
+inline CGAL::Named_function_parameters<int, internal_np::maximum_rings_t> maximum_rings(int k)
+{
+  return CGAL::Named_function_parameters<int, internal_np::maximum_rings_t>(k);
+}
+} // namespace parameters
+
+/// \ingroup PkgGeodesicRidgeRef
+/// Counts and timings of the whole pipeline (seconds).
+struct Geodesic_ridge_statistics
+{
+  std::string solver;
+  double tolerance = 0;
+  int solves = 0;                 ///< solves on the extended surface (one per dynamic extension step)
+  std::size_t outer_copies_winning = 0; ///< at the last solve: outer-ring copies still winning area
+  Rough_cut_locus_statistics rough_cut_locus;
+  Extended_surface_statistics extended_surface;
+  Ridge_curve_statistics ridge;
+  double time_rough_cut_locus = 0, time_extension = 0, time_solve = 0, time_envelope = 0,
+         time_assembly = 0, time_total = 0;
+};
+
+/// \ingroup PkgGeodesicRidgeRef
+/// Everything the pipeline computed for one source: the ridge polylines (each
+/// point with its surface location), per original face the cells of the
+/// region-wise linear distance field, the rough cut locus and the statistics.
+template <class TriangleMesh, class Point_3>
+struct Ridge_curve
+{
+  /// polylines between junctions and free ends (a closed one repeats its first point)
+  std::vector<std::vector<Ridge_point<Point_3> > > polylines;
+  /// per face of M (by face index): the cells of the lower envelope with their linear fields
+  std::vector<std::vector<Ridge_region_cell> > regions;
+  Rough_cut_locus<TriangleMesh> rough_cut_locus;
+  Geodesic_ridge_statistics statistics;
+};
+
+namespace internal {
+
+template <class TriangleMesh, class NamedParameters>
+auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto t_start = std::chrono::steady_clock::now();
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const auto eim = CGAL::get_initialized_edge_index_map(tm, np);
+  typedef typename boost::property_traits<std::decay_t<decltype(vpm)> >::value_type Point;
+  const auto solver = choose_parameter(get_parameter(np, internal_np::solver_t()), Exact_solver());
+  const int initial_rings = choose_parameter(get_parameter(np, internal_np::initial_rings_t()), 3);
+  const int maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), 8);
+  if(initial_rings < 0 || maximum_rings < initial_rings)
+    throw Invalid_parameter_error("extension rings: need 0 <= initial_rings <= maximum_rings");
+
+  Ridge_curve<TriangleMesh, Point> result;
+  Geodesic_ridge_statistics& st = result.statistics;
+  st.solver = solver.name();
+
+  // Stage 1
+  auto t0 = std::chrono::steady_clock::now();
+  result.rough_cut_locus = rough_cut_locus_impl(tm, src, np);
+  const Rough_cut_locus<TriangleMesh>& rcl = result.rough_cut_locus;
+  st.tolerance = rcl.tolerance;
+  st.rough_cut_locus = rcl.statistics;
+  st.time_rough_cut_locus = seconds_since(t0);
+
+  const std::size_t nf = num_faces(tm);
+  double mean_edge = 0;
+  for(auto e : edges(tm)) mean_edge += distance_between(vpm, source(e, tm), target(e, tm));
+  mean_edge /= static_cast<double>(num_edges(tm));
+  const double same_front_tolerance = 1e-6 * mean_edge;
+
+  // Stage 2: extend, solve, and extend again where the outermost copies still win.
+  t0 = std::chrono::steady_clock::now();
+  Extended_surface_builder<TriangleMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(vim)>,
+                           std::decay_t<decltype(fim)>, std::decay_t<decltype(eim)> >
+      builder(tm, rcl, vpm, vim, fim, eim);
+  for(int r = 0; r < initial_rings; ++r) builder.grow_ring();
+  st.time_extension += seconds_since(t0);
+
+  Extended_surface<Point> E;
+  std::vector<Face_copies> face_copies;
+  for(;;)
+  {
+    t0 = std::chrono::steady_clock::now();
+    builder.materialize(E, src, vim, fim);
+    st.time_extension += seconds_since(t0);
+
+    t0 = std::chrono::steady_clock::now();
+    std::vector<double> distance(E.mesh.number_of_vertices());
+    if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance));
+    else solver(E.mesh, E.source_location, CGAL::make_property_map(distance));
+    ++st.solves;
+    st.time_solve += seconds_since(t0);
+    if(E.source_is_vertex && distance[E.source_vertex] != 0)
+      throw Algorithm_error("the solver's distance at the source is not 0");
+
+    // the copies of every face, undominated ones only (a copy whose three corner
+    // distances are all >= another's never wins)
+    t0 = std::chrono::steady_clock::now();
+    face_copies.assign(nf, {});
+    for(auto c : E.mesh.faces())
+    {
+      const auto h = E.mesh.halfedge(c);
+      const std::array<double, 3> d = {{distance[E.mesh.source(h)], distance[E.mesh.target(h)],
+                                        distance[E.mesh.target(E.mesh.next(h))]}};
+      Face_copies& fc = face_copies[E.original_face[c]];
+      bool dominated = false;
+      for(std::size_t i = 0; i < fc.fields.size() && !dominated; ++i)
+        dominated = fc.fields[i][0] <= d[0] && fc.fields[i][1] <= d[1] && fc.fields[i][2] <= d[2];
+      if(dominated) continue;
+      std::size_t kept = 0;
+      for(std::size_t i = 0; i < fc.fields.size(); ++i)
+        if(!(d[0] <= fc.fields[i][0] && d[1] <= fc.fields[i][1] && d[2] <= fc.fields[i][2]))
+        {
+          fc.fields[kept] = fc.fields[i];
+          fc.copies[kept] = fc.copies[i];
+          ++kept;
+        }
+      fc.fields.resize(kept);
+      fc.copies.resize(kept);
+      fc.fields.push_back(d);
+      fc.copies.push_back(c);
+    }
+    // outermost copies that still win more than 1% of their face
+    const int outer = builder.statistics().rings;
+    std::vector<char> grow_from(E.mesh.number_of_faces(), 0);
+    std::size_t winning = 0;
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      const Face_copies& fc = face_copies[f];
+      bool has_outer = false;
+      for(std::size_t c : fc.copies) has_outer |= (E.ring[c] == outer && outer > 0);
+      if(!has_outer) continue;
+      const Lower_envelope<double> env = compute_lower_envelope<double>(fc.fields);
+      for(const auto& cell : env.cells)
+        if(E.ring[fc.copies[cell.copy]] == outer &&
+           barycentric_area(cell.polygon) > 0.01 * 0.5)
+        {
+          grow_from[fc.copies[cell.copy]] = 1;
+          ++winning;
+        }
+    }
+    st.outer_copies_winning = winning;
+    st.time_envelope += seconds_since(t0);
+    if(winning == 0 || builder.statistics().rings >= maximum_rings) break;
+    t0 = std::chrono::steady_clock::now();
+    builder.grow_ring(&grow_from);
+    st.time_extension += seconds_since(t0);
+  }
+  st.extended_surface = E.statistics;
+
+  // Stage 2c + 3: exact envelopes and the ridge curve
+  t0 = std::chrono::steady_clock::now();
+  assemble_ridge_curve(tm, E, face_copies, same_front_tolerance, vpm, vim, fim, eim, result.polylines,
+                       result.regions, st.ridge);
+  st.time_assembly = seconds_since(t0);
+  st.ridge.time = st.time_assembly;
+  if(st.ridge.components != 1 || st.ridge.cycles != static_cast<std::size_t>(2 * rcl.statistics.genus))
+    throw Algorithm_error("the ridge has " + std::to_string(st.ridge.components) + " components and " +
+                          std::to_string(st.ridge.cycles) + " cycles; expected 1 and 2g = " +
+                          std::to_string(2 * rcl.statistics.genus));
+  st.time_total = seconds_since(t_start);
+  return result;
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicRidgeRef
+/// Computes the geodesic ridge of `source` (a vertex, or a `Face_location`
+/// `std::pair<face_descriptor, std::array<FT,3>>`) on the closed triangle mesh
+/// `tm`, and keeps everything computed on the way.
+///
+/// \param np named parameters: `Geodesic_ridge::parameters::tolerance(t)`,
+///   `solver(s)` (a `GeodesicSolver`, default `Exact_solver`), `initial_rings(k)`
+///   (default 3), `maximum_rings(k)` (default 8), then CGAL's `vertex_point_map`,
+///   `vertex_index_map`, `face_index_map`, `edge_index_map`.
+/// \post the ridge is connected, a tree on a genus-0 surface, with exactly 2g
+///   independent cycles on genus g (`Algorithm_error` otherwise).
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+auto compute_ridge_curve(const TriangleMesh& tm,
+                         typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
+                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::get_tolerance(np);
+  validate_triangle_mesh(tm, np);
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  return internal::ridge_curve_impl(tm, make_vertex_source(tm, source, vim), np);
+}
+
+template <class TriangleMesh, class FT, class NamedParameters = CGAL::parameters::Default_named_parameters>
+auto compute_ridge_curve(const TriangleMesh& tm,
+                         const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
+                                         std::array<FT, 3> >& source,
+                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  internal::get_tolerance(np);
+  validate_triangle_mesh(tm, np);
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  return internal::ridge_curve_impl(tm, make_face_source(tm, source, vpm, fim, vim), np);
+}
+
+/// \ingroup PkgGeodesicRidgeRef
+/// One-shot version: writes the ridge polylines (`std::vector<Point_3>`) to `out`.
+template <class TriangleMesh, class Source, class OutputIterator,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+OutputIterator compute_geodesic_ridge(const TriangleMesh& tm, const Source& source, OutputIterator out,
+                                      const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto rc = compute_ridge_curve(tm, source, np);
+  typedef typename std::decay_t<decltype(rc.polylines[0][0].point)> Point;
+  for(const auto& pl : rc.polylines)
+  {
+    std::vector<Point> points;
+    for(const auto& p : pl) points.push_back(p.point);
+    *out++ = points;
+  }
+  return out;
+}
+
+} // namespace Geodesic_ridge
+
+#endif // GEODESIC_RIDGE_COMPUTE_GEODESIC_RIDGE_H

@@ -1,0 +1,382 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// Stage 3: the ridge curve (DESIGN.md §4).
+//
+// Every point of M is labelled by the copy that wins the lower envelope there.
+// Two labels are the same front when their copies are glued in the extended
+// surface across the edge between them (or carry equal fields). The ridge is
+// every boundary between different fronts: inside faces (envelope edges) and
+// along mesh edges. It is then made connected with the topology of the cut
+// locus: the regions of M minus the ridge are merged (weakest ridge segment
+// first) until one region is left, and detached pieces are dropped.
+#ifndef GEODESIC_RIDGE_RIDGE_CURVE_H
+#define GEODESIC_RIDGE_RIDGE_CURVE_H
+
+#include <Geodesic_ridge/extended_surface.h>
+#include <Geodesic_ridge/internal/graph_polylines.h>
+#include <Geodesic_ridge/internal/union_find.h>
+#include <Geodesic_ridge/lower_envelope.h>
+
+#include <CGAL/Gmpq.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace Geodesic_ridge {
+
+/// \ingroup PkgGeodesicRidgeRef
+/// A point of the ridge: its surface location in M (face index, barycentric
+/// coordinates in CGAL's order) and its 3D point.
+template <class Point_3>
+struct Ridge_point
+{
+  std::size_t face = 0;
+  std::array<double, 3> barycentric = {{0, 0, 0}};
+  Point_3 point;
+};
+
+/// \ingroup PkgGeodesicRidgeRef
+/// The linear field of one copy over its cell of an original face.
+struct Ridge_region_cell
+{
+  std::size_t copy = 0;                     ///< face of the extended surface
+  std::array<double, 3> field = {{0, 0, 0}}; ///< distances at the face's corners
+  std::vector<std::array<double, 3> > polygon; ///< the cell, barycentric (rounded from exact)
+};
+
+/// \ingroup PkgGeodesicRidgeRef
+/// Counts of stage 3.
+struct Ridge_curve_statistics
+{
+  std::size_t faces_with_several_copies = 0;
+  std::size_t surviving_copies = 0;       ///< copies not dominated, over all faces
+  std::size_t envelope_segments = 0;      ///< inside faces, between different fronts
+  std::size_t edge_segments = 0;          ///< along mesh edges, between different fronts
+  std::size_t regions_before_merge = 0;   ///< components of M minus the raw ridge
+  std::size_t merged_segments = 0;        ///< segments removed to merge regions
+  std::size_t dropped_components = 0;     ///< detached pieces dropped
+  std::size_t ridge_segments = 0, junctions = 0, free_ends = 0, components = 0, cycles = 0;
+  double total_length = 0;
+  double time = 0;
+};
+
+namespace internal {
+
+typedef CGAL::Gmpq Exact_number;
+
+// Gradient of the linear field with values d at corners p (in the face's plane).
+template <class Point_3>
+std::array<double, 3> field_gradient(const std::array<Point_3, 3>& p, const std::array<double, 3>& d)
+{
+  double e[3][3];
+  for(int k = 0; k < 3; ++k)
+  {
+    const Point_3& a = p[(k + 1) % 3];
+    const Point_3& b = p[(k + 2) % 3];
+    e[k][0] = b.x() - a.x(); e[k][1] = b.y() - a.y(); e[k][2] = b.z() - a.z();
+  }
+  // N = e2 x (-e1) = (p1 - p0) x (p2 - p0)
+  const double ux = p[1].x() - p[0].x(), uy = p[1].y() - p[0].y(), uz = p[1].z() - p[0].z();
+  const double vx = p[2].x() - p[0].x(), vy = p[2].y() - p[0].y(), vz = p[2].z() - p[0].z();
+  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  const double nn = nx * nx + ny * ny + nz * nz; // (2A)^2
+  std::array<double, 3> g = {{0, 0, 0}};
+  for(int k = 0; k < 3; ++k)
+  {
+    // grad λ_k = (N x e_k) / (2A)^2 * |N|/|N| ... with N unnormalized: (N x e_k) / |N|^2
+    const double cx = ny * e[k][2] - nz * e[k][1], cy = nz * e[k][0] - nx * e[k][2],
+                 cz = nx * e[k][1] - ny * e[k][0];
+    g[0] += d[k] * cx / nn; g[1] += d[k] * cy / nn; g[2] += d[k] * cz / nn;
+  }
+  return g;
+}
+
+/// What stage 3 needs of one original face.
+struct Face_copies
+{
+  std::vector<std::size_t> copies;              // faces of E
+  std::vector<std::array<double, 3> > fields;   // their corner distances
+};
+
+template <class TriangleMesh, class Point, class VertexPointMap, class VertexIndexMap,
+          class FaceIndexMap, class EdgeIndexMap>
+void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>& E,
+                          const std::vector<Face_copies>& face_copies, double same_front_tolerance,
+                          VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim,
+                          std::vector<std::vector<Ridge_point<Point> > >& polylines,
+                          std::vector<std::vector<Ridge_region_cell> >& regions,
+                          Ridge_curve_statistics& st)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef Exact_number Q;
+  const std::size_t nf = num_faces(tm), ne = num_edges(tm);
+
+  // faces by index, with corner points and halfedges
+  std::vector<face_descriptor> face_of(nf);
+  for(face_descriptor f : faces(tm)) face_of[get(fim, f)] = f;
+  auto corner_halfedges = [&](std::size_t f) {
+    const halfedge_descriptor h0 = halfedge(face_of[f], tm);
+    return std::array<halfedge_descriptor, 3>{{h0, next(h0, tm), next(next(h0, tm), tm)}};
+  };
+  auto corner_points = [&](std::size_t f) {
+    const auto h = corner_halfedges(f);
+    return std::array<Point, 3>{{get(vpm, source(h[0], tm)), get(vpm, source(h[1], tm)),
+                                 get(vpm, source(h[2], tm))}};
+  };
+  auto same_field = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::abs(a[0] - b[0]) <= same_front_tolerance && std::abs(a[1] - b[1]) <= same_front_tolerance &&
+           std::abs(a[2] - b[2]) <= same_front_tolerance;
+  };
+
+  // ---- envelopes and cells
+  struct Cell { std::size_t face, copy; std::array<double, 3> field; };
+  std::vector<Cell> cells;
+  std::vector<std::vector<std::size_t> > cells_of_face(nf);
+  std::vector<Lower_envelope<Q> > envelopes(nf);
+  regions.assign(nf, {});
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const Face_copies& fc = face_copies[f];
+    envelopes[f] = compute_lower_envelope<Q>(fc.fields);
+    if(fc.copies.size() > 1) ++st.faces_with_several_copies;
+    st.surviving_copies += envelopes[f].cells.size();
+    for(const auto& c : envelopes[f].cells)
+    {
+      cells_of_face[f].push_back(cells.size());
+      cells.push_back(Cell{f, fc.copies[c.copy], fc.fields[c.copy]});
+      Ridge_region_cell rc;
+      rc.copy = fc.copies[c.copy];
+      rc.field = fc.fields[c.copy];
+      for(const auto& p : c.polygon)
+        rc.polygon.push_back({{CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2])}});
+      regions[f].push_back(std::move(rc));
+    }
+  }
+  auto cell_of = [&](std::size_t f, std::size_t local_copy) {
+    for(std::size_t i = 0; i < envelopes[f].cells.size(); ++i)
+      if(envelopes[f].cells[i].copy == local_copy) return cells_of_face[f][i];
+    return std::size_t(-1);
+  };
+
+  // ---- nodes, keyed exactly: (0, vertex) | (1, edge, t along halfedge(edge)) | (2, face, λ1, λ2)
+  typedef std::tuple<int, std::size_t, Q, Q> Key;
+  std::map<Key, std::size_t> node_of;
+  std::vector<Ridge_point<Point> > nodes;
+  auto add_node = [&](const Key& key, std::size_t f, const std::array<Q, 3>& lambda) {
+    auto it = node_of.find(key);
+    if(it != node_of.end()) return it->second;
+    Ridge_point<Point> p;
+    p.face = f;
+    p.barycentric = {{CGAL::to_double(lambda[0]), CGAL::to_double(lambda[1]), CGAL::to_double(lambda[2])}};
+    const auto cp = corner_points(f);
+    p.point = barycentric_to_point(lambda, cp[0], cp[1], cp[2]);
+    nodes.push_back(p);
+    node_of.emplace(key, nodes.size() - 1);
+    return nodes.size() - 1;
+  };
+  // a point of face f given by exact barycentric coordinates: normalized to its feature
+  auto node_at = [&](std::size_t f, const std::array<Q, 3>& lambda) {
+    const auto h = corner_halfedges(f);
+    int zeros = 0, nz = -1;
+    for(int k = 0; k < 3; ++k) { if(CGAL::is_zero(lambda[k])) ++zeros; else nz = k; }
+    if(zeros == 2)
+      return add_node(Key(0, get(vim, source(h[nz], tm)), Q(0), Q(0)), f, lambda);
+    for(int k = 0; k < 3; ++k)
+      if(CGAL::is_zero(lambda[(k + 2) % 3])) // on edge k, from corner k to corner k+1
+      {
+        const auto e = edge(h[k], tm);
+        // t runs from the endpoint of smaller vertex index (an edge descriptor may
+        // remember the halfedge it was made from, so halfedge(e) is no orientation)
+        const bool forward = get(vim, source(h[k], tm)) < get(vim, target(h[k], tm));
+        const Q t = forward ? lambda[(k + 1) % 3] : lambda[k];
+        return add_node(Key(1, get(eim, e), t, Q(0)), f, lambda);
+      }
+    return add_node(Key(2, f, lambda[1], lambda[2]), f, lambda);
+  };
+
+  struct Segment { std::size_t a, b, left, right; double strength; bool ridge; };
+  std::vector<Segment> segments;
+  Union_find fronts(cells.size());
+
+  // ---- inside faces: envelope edges between different fronts
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const auto cp = corner_points(f);
+    for(const auto& s : envelopes[f].segments)
+    {
+      const std::size_t ca = cell_of(f, s.copy_a), cb = cell_of(f, s.copy_b);
+      if(same_field(cells[ca].field, cells[cb].field)) { fronts.unite(ca, cb); continue; }
+      const auto ga = field_gradient(cp, cells[ca].field), gb = field_gradient(cp, cells[cb].field);
+      const double strength = std::sqrt((ga[0] - gb[0]) * (ga[0] - gb[0]) + (ga[1] - gb[1]) * (ga[1] - gb[1]) +
+                                        (ga[2] - gb[2]) * (ga[2] - gb[2]));
+      segments.push_back(Segment{node_at(f, s.endpoints[0]), node_at(f, s.endpoints[1]), ca, cb, strength, true});
+      ++st.envelope_segments;
+    }
+  }
+
+  // ---- along mesh edges: split the edge by both sides' cell boundaries
+  std::vector<char> edge_done(ne, 0);
+  for(std::size_t f1 = 0; f1 < nf; ++f1)
+  {
+    const auto h1s = corner_halfedges(f1);
+    for(int k1 = 0; k1 < 3; ++k1)
+    {
+      const halfedge_descriptor h1 = h1s[k1];
+      const auto e = edge(h1, tm);
+      if(edge_done[get(eim, e)]) continue;
+      edge_done[get(eim, e)] = 1;
+      const halfedge_descriptor h2 = opposite(h1, tm);
+      const std::size_t f2 = get(fim, face(h2, tm));
+      const auto h2s = corner_halfedges(f2);
+      int k2 = 0;
+      while(h2s[k2] != h2) ++k2;
+      // intervals (t along h1: from source(h1) to target(h1)) and the winning cell on each side
+      struct Interval { Q lo, hi; std::size_t cell; };
+      auto intervals = [&](std::size_t f, int k, bool reversed) {
+        std::vector<Interval> out;
+        for(std::size_t i = 0; i < envelopes[f].cells.size(); ++i)
+        {
+          const auto& c = envelopes[f].cells[i];
+          const std::size_t n = c.polygon.size();
+          for(std::size_t j = 0; j < n; ++j)
+            if(is_triangle_edge_label(c.edge_label[j]) && triangle_edge_of_label(c.edge_label[j]) == k)
+            {
+              Q ta = c.polygon[j][(k + 1) % 3], tb = c.polygon[(j + 1) % n][(k + 1) % 3];
+              if(reversed) { ta = Q(1) - ta; tb = Q(1) - tb; }
+              if(tb < ta) std::swap(ta, tb);
+              if(ta < tb) out.push_back(Interval{ta, tb, cells_of_face[f][i]});
+            }
+        }
+        std::sort(out.begin(), out.end(), [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
+        return out;
+      };
+      const std::vector<Interval> side1 = intervals(f1, k1, false), side2 = intervals(f2, k2, true);
+      std::vector<Q> cuts;
+      for(const auto& i : side1) { cuts.push_back(i.lo); cuts.push_back(i.hi); }
+      for(const auto& i : side2) { cuts.push_back(i.lo); cuts.push_back(i.hi); }
+      std::sort(cuts.begin(), cuts.end());
+      cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+      const auto cp1 = corner_points(f1), cp2 = corner_points(f2);
+      for(std::size_t i = 0; i + 1 < cuts.size(); ++i)
+      {
+        const Q mid = (cuts[i] + cuts[i + 1]) / 2;
+        std::size_t c1 = std::size_t(-1), c2 = std::size_t(-1);
+        for(const auto& iv : side1) if(iv.lo <= mid && mid <= iv.hi) { c1 = iv.cell; break; }
+        for(const auto& iv : side2) if(iv.lo <= mid && mid <= iv.hi) { c2 = iv.cell; break; }
+        if(c1 == std::size_t(-1) || c2 == std::size_t(-1)) continue;
+        // glued in E across this edge?
+        const auto& em = E.mesh;
+        typedef typename Extended_surface<Point>::Mesh::Face_index EF;
+        auto eh = em.halfedge(EF(static_cast<typename Extended_surface<Point>::Mesh::size_type>(cells[c1].copy)));
+        for(int j = 0; j < k1; ++j) eh = em.next(eh);
+        const auto eo = em.opposite(eh);
+        const bool glued = !em.is_border(eo) && std::size_t(em.face(eo)) == cells[c2].copy;
+        // equal values along the interval (the fields restricted to the edge)
+        auto value = [&](const Cell& c, int k, const Q& t) { // t along corner k -> k+1
+          const double tt = CGAL::to_double(t);
+          return (1 - tt) * c.field[k] + tt * c.field[(k + 1) % 3];
+        };
+        const bool equal = std::abs(value(cells[c1], k1, cuts[i]) - value(cells[c2], k2, Q(1) - cuts[i])) <=
+                               same_front_tolerance &&
+                           std::abs(value(cells[c1], k1, cuts[i + 1]) - value(cells[c2], k2, Q(1) - cuts[i + 1])) <=
+                               same_front_tolerance;
+        if(glued || equal) { fronts.unite(c1, c2); continue; }
+        // strength: jump of the gradient across the edge, unfolded
+        const auto g1 = field_gradient(cp1, cells[c1].field), g2 = field_gradient(cp2, cells[c2].field);
+        const auto pa = get(vpm, source(h1, tm)), pb = get(vpm, target(h1, tm));
+        double t[3] = {pb.x() - pa.x(), pb.y() - pa.y(), pb.z() - pa.z()};
+        const double tl = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+        for(double& x : t) x /= tl;
+        auto inward = [&](const std::array<Point, 3>& cp, int k) { // unit vector in the face, normal to edge k
+          const Point& a = cp[k]; const Point& c = cp[(k + 2) % 3];
+          double w[3] = {c.x() - a.x(), c.y() - a.y(), c.z() - a.z()};
+          const double along = w[0] * t[0] + w[1] * t[1] + w[2] * t[2];
+          for(int j = 0; j < 3; ++j) w[j] -= along * t[j];
+          const double l = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+          return std::array<double, 3>{{w[0] / l, w[1] / l, w[2] / l}};
+        };
+        const auto m1 = inward(cp1, k1), m2 = inward(cp2, k2);
+        auto dot = [](const std::array<double, 3>& a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+        const double jt = dot(g1, t) - dot(g2, t);
+        const double jn = dot(g1, m1.data()) + dot(g2, m2.data());
+        // the two edge points, from f1's side
+        std::array<Q, 3> la = {{Q(0), Q(0), Q(0)}}, lb = la;
+        la[k1] = Q(1) - cuts[i]; la[(k1 + 1) % 3] = cuts[i];
+        lb[k1] = Q(1) - cuts[i + 1]; lb[(k1 + 1) % 3] = cuts[i + 1];
+        segments.push_back(Segment{node_at(f1, la), node_at(f1, lb), c1, c2, std::sqrt(jt * jt + jn * jn), true});
+        ++st.edge_segments;
+      }
+    }
+  }
+
+  // ---- one region: merge the regions of M minus the ridge, weakest segment first
+  {
+    std::set<std::size_t> roots;
+    for(std::size_t c = 0; c < cells.size(); ++c) roots.insert(fronts.find(c));
+    st.regions_before_merge = roots.size();
+  }
+  std::vector<std::size_t> order(segments.size());
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return segments[a].strength < segments[b].strength; });
+  for(std::size_t i : order)
+    if(fronts.unite(segments[i].left, segments[i].right))
+    {
+      segments[i].ridge = false;
+      ++st.merged_segments;
+    }
+
+  // ---- keep the main component (largest length); drop degenerate segments
+  auto length = [&](const Segment& s) {
+    const Point& p = nodes[s.a].point; const Point& q = nodes[s.b].point;
+    return std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
+  };
+  Union_find comp(nodes.size());
+  for(const Segment& s : segments) if(s.ridge && s.a != s.b) comp.unite(s.a, s.b);
+  std::map<std::size_t, double> comp_length;
+  for(const Segment& s : segments) if(s.ridge && s.a != s.b) comp_length[comp.find(s.a)] += length(s);
+  std::size_t main = std::size_t(-1);
+  double best = -1;
+  for(const auto& [r, l] : comp_length) if(l > best) { best = l; main = r; }
+  st.dropped_components = comp_length.empty() ? 0 : comp_length.size() - 1;
+
+  std::vector<std::pair<std::size_t, std::size_t> > graph;
+  std::vector<std::size_t> degree(nodes.size(), 0);
+  for(const Segment& s : segments)
+    if(s.ridge && s.a != s.b && comp.find(s.a) == main)
+    {
+      graph.emplace_back(s.a, s.b);
+      ++degree[s.a]; ++degree[s.b];
+      st.total_length += length(s);
+    }
+  st.ridge_segments = graph.size();
+  std::size_t used_nodes = 0;
+  for(std::size_t d : degree)
+  {
+    used_nodes += d > 0;
+    st.junctions += d >= 3;
+    st.free_ends += d == 1;
+  }
+  st.components = graph.empty() ? 0 : 1;
+  st.cycles = graph.empty() ? 0 : graph.size() + 1 - used_nodes;
+  polylines.clear();
+  for(const auto& chain : graph_to_chains(nodes.size(), graph))
+  {
+    std::vector<Ridge_point<Point> > pl;
+    for(std::size_t v : chain) pl.push_back(nodes[v]);
+    polylines.push_back(std::move(pl));
+  }
+}
+
+} // namespace internal
+} // namespace Geodesic_ridge
+
+#endif // GEODESIC_RIDGE_RIDGE_CURVE_H
