@@ -3,16 +3,19 @@
 // geodesic_ridge: the package's command-line program (DESIGN.md §8).
 //
 //   geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z)
-//                  [--tolerance T] [--rough-cut OUT.polylines.txt] [--stats OUT.json]
+//                  [--tolerance T] [--solver exact] [--ridge OUT.polylines.txt]
+//                  [--rough-cut OUT.polylines.txt] [--stats OUT.json]
 //
 // Exit status: 0 success, 1 bad input (mesh, source, parameter), 2 bad command
 // line, 3 internal error. Every error is one line on stderr.
+#include <Geodesic_ridge/IO/png.h>
 #include <Geodesic_ridge/IO/polylines.h>
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
-#include <Geodesic_ridge/rough_cut_locus.h>
+#include <Geodesic_ridge/compute_geodesic_ridge.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/bounding_box.h>
 
 #include <cerrno>
 #include <cmath>
@@ -40,14 +43,20 @@ struct Usage_error : std::runtime_error
 
 const char* usage_text =
     "usage: geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z)\n"
-    "                      [--tolerance T] [--rough-cut OUT.polylines.txt] [--stats OUT.json]\n"
+    "                      [--tolerance T] [--solver exact] [--ridge OUT.polylines.txt]\n"
+    "                      [--rough-cut OUT.polylines.txt] [--stats OUT.json] [--png OUT.png]\n"
     "  MESH              closed, connected, manifold triangle mesh (.off, .obj, .ply)\n"
     "  --source-vertex V source at vertex V (0-based, file order)\n"
     "  --source-point FACE X Y Z\n"
     "                    source at the point (X,Y,Z) of face FACE (0-based, file order)\n"
     "  --tolerance T     significance tolerance in [0, 0.5) (default 0.025)\n"
+    "  --solver NAME     geodesic solver on the extended surface: exact (CGAL\n"
+    "                    Surface_mesh_shortest_path; the only one in this version)\n"
+    "  --ridge OUT       write the ridge curve as CGAL polylines (n x1 y1 z1 ... per line)\n"
     "  --rough-cut OUT   write the rough cut locus K (stage 1) as CGAL polylines\n"
-    "  --stats OUT.json  write counts, timings and parameters as JSON\n";
+    "  --stats OUT.json  write counts, timings and parameters as JSON\n"
+    "  --png OUT.png     picture: the mesh from two opposite sides, the ridge in red,\n"
+    "                    the rough cut locus in blue, the source in green\n";
 
 std::size_t parse_index(const std::string& what, const std::string& s)
 {
@@ -78,7 +87,8 @@ struct Options
   std::string source_face_text;
   std::array<std::string, 3> source_point_text;
   double tolerance = Geodesic_ridge::default_tolerance;
-  std::string rough_cut, stats;
+  std::string rough_cut, stats, ridge, png;
+  std::string solver = "exact";
 };
 
 Options parse(int argc, char** argv)
@@ -109,6 +119,15 @@ Options parse(int argc, char** argv)
     }
     else if(a == "--tolerance") { tolerance_text = value(i, a); have_tolerance = true; }
     else if(a == "--rough-cut") o.rough_cut = value(i, a);
+    else if(a == "--ridge") o.ridge = value(i, a);
+    else if(a == "--png") o.png = value(i, a);
+    else if(a == "--solver")
+    {
+      o.solver = value(i, a);
+      if(o.solver != "exact")
+        throw Geodesic_ridge::Invalid_parameter_error("unknown solver '" + o.solver +
+                                                      "': this version has 'exact' only");
+    }
     else if(a == "--stats") o.stats = value(i, a);
     else if(a.size() > 1 && a[0] == '-')
       throw Usage_error("unknown option '" + a + "'");
@@ -179,10 +198,15 @@ std::string json_string(const std::string& x)
   return out + "\"";
 }
 
-void write_stats(const std::string& filename, const Options& o,
-                 const Geodesic_ridge::Rough_cut_locus<Mesh>& r, double read_seconds)
+typedef Geodesic_ridge::Ridge_curve<Mesh, Point_3> Ridge;
+
+void write_stats(const std::string& filename, const Options& o, const Ridge& rc, double read_seconds)
 {
+  const auto& r = rc.rough_cut_locus;
   const auto& s = r.statistics;
+  const auto& g = rc.statistics;
+  const auto& x = g.extended_surface;
+  const auto& q = g.ridge;
   std::ofstream os(filename);
   if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
   os << "{\n"
@@ -194,7 +218,8 @@ void write_stats(const std::string& filename, const Options& o,
                                       json_number(r.source.location.second[0]) + ", " +
                                       json_number(r.source.location.second[1]) + ", " +
                                       json_number(r.source.location.second[2]) + "]}") << ",\n"
-     << "    \"tolerance\": " << json_number(o.tolerance) << "\n"
+     << "    \"tolerance\": " << json_number(o.tolerance) << ",\n"
+     << "    \"solver\": " << json_string(g.solver) << "\n"
      << "  },\n"
      << "  \"mesh\": {\"vertices\": " << s.number_of_vertices << ", \"edges\": " << s.number_of_edges
      << ", \"faces\": " << s.number_of_faces << ", \"genus\": " << s.genus
@@ -212,13 +237,47 @@ void write_stats(const std::string& filename, const Options& o,
      << "    \"teeth_pruned\": " << s.number_of_teeth_pruned << ",\n"
      << "    \"fallback_single_rung\": " << (s.fallback_single_rung ? "true" : "false") << "\n"
      << "  },\n"
+     << "  \"extended_surface\": {\n"
+     << "    \"faces\": " << x.number_of_faces << ",\n"
+     << "    \"vertices\": " << x.number_of_vertices << ",\n"
+     << "    \"faces_over_mesh_faces\": " << json_number(double(x.number_of_faces) / s.number_of_faces) << ",\n"
+     << "    \"rings\": " << x.rings << ",\n"
+     << "    \"solves\": " << g.solves << ",\n"
+     << "    \"outer_copies_still_winning\": " << g.outer_copies_winning << ",\n"
+     << "    \"closures\": " << x.number_of_closures << ",\n"
+     << "    \"leaf_vertices\": " << x.number_of_leaf_vertices << ",\n"
+     << "    \"winding_bound_hits\": " << x.winding_bound_hits << ",\n"
+     << "    \"refused_faces\": " << x.refused_faces << ",\n"
+     << "    \"refused_gluings\": " << x.refused_gluings << "\n"
+     << "  },\n"
+     << "  \"ridge\": {\n"
+     << "    \"polylines\": " << rc.polylines.size() << ",\n"
+     << "    \"segments\": " << q.ridge_segments << ",\n"
+     << "    \"junctions\": " << q.junctions << ",\n"
+     << "    \"free_ends\": " << q.free_ends << ",\n"
+     << "    \"components\": " << q.components << ",\n"
+     << "    \"cycles\": " << q.cycles << ",\n"
+     << "    \"total_length\": " << json_number(q.total_length) << ",\n"
+     << "    \"faces_with_several_copies\": " << q.faces_with_several_copies << ",\n"
+     << "    \"surviving_copies\": " << q.surviving_copies << ",\n"
+     << "    \"envelope_segments\": " << q.envelope_segments << ",\n"
+     << "    \"edge_segments\": " << q.edge_segments << ",\n"
+     << "    \"regions_before_merge\": " << q.regions_before_merge << ",\n"
+     << "    \"merged_segments\": " << q.merged_segments << ",\n"
+     << "    \"dropped_components\": " << q.dropped_components << "\n"
+     << "  },\n"
      << "  \"timings_seconds\": {\n"
      << "    \"read_and_validate\": " << json_number(read_seconds) << ",\n"
      << "    \"shortest_path_tree\": " << json_number(s.time_shortest_path_tree) << ",\n"
      << "    \"significance\": " << json_number(s.time_significance) << ",\n"
      << "    \"cut_graph\": " << json_number(s.time_cut_graph) << ",\n"
      << "    \"disk_check\": " << json_number(s.time_disk_check) << ",\n"
-     << "    \"rough_cut_locus_total\": " << json_number(s.time_total) << "\n"
+     << "    \"rough_cut_locus_total\": " << json_number(s.time_total) << ",\n"
+     << "    \"extended_surface\": " << json_number(g.time_extension) << ",\n"
+     << "    \"solve\": " << json_number(g.time_solve) << ",\n"
+     << "    \"envelope_and_dominance\": " << json_number(g.time_envelope) << ",\n"
+     << "    \"ridge_assembly\": " << json_number(g.time_assembly) << ",\n"
+     << "    \"total\": " << json_number(g.time_total) << "\n"
      << "  }\n"
      << "}\n";
   os.flush();
@@ -233,14 +292,14 @@ int run(const Options& o)
   const double read_seconds = Geodesic_ridge::internal::seconds_since(t0);
 
   const auto np = Geodesic_ridge::parameters::tolerance(o.tolerance);
-  Geodesic_ridge::Rough_cut_locus<Mesh> r;
+  std::optional<Ridge> ridge;
   if(o.source_vertex)
   {
     if(*o.source_vertex >= mesh.number_of_vertices())
       throw Geodesic_ridge::Invalid_source_error(
           "source vertex " + std::to_string(*o.source_vertex) + " is out of range: the mesh has " +
           std::to_string(mesh.number_of_vertices()) + " vertices");
-    r = Geodesic_ridge::compute_rough_cut_locus(mesh, vertex_descriptor(Mesh::size_type(*o.source_vertex)), np);
+    ridge = Geodesic_ridge::compute_ridge_curve(mesh, vertex_descriptor(Mesh::size_type(*o.source_vertex)), np);
   }
   else
   {
@@ -253,16 +312,33 @@ int run(const Options& o)
               parse_number("source z", o.source_point_text[2]));
     const face_descriptor f(Mesh::size_type(*o.source_face));
     const std::pair<face_descriptor, std::array<double, 3> > loc(f, locate_in_face(mesh, f, q));
-    r = Geodesic_ridge::compute_rough_cut_locus(mesh, loc, np);
+    ridge = Geodesic_ridge::compute_ridge_curve(mesh, loc, np);
   }
-
+  const auto& r = ridge->rough_cut_locus;
   const auto& s = r.statistics;
+  const auto& g = ridge->statistics;
   std::cout << "mesh " << o.mesh << ": " << s.number_of_vertices << " vertices, "
             << s.number_of_faces << " faces, genus " << s.genus << "\n"
             << "rough cut locus (tolerance " << o.tolerance << "): " << s.number_of_kept_dual_edges
             << " of " << s.number_of_dual_edges << " dual edges kept; cut graph K: "
-            << s.number_of_cut_edges << " edges, " << s.number_of_cut_leaves << " leaves, cycle rank "
-            << s.cut_cycle_rank << "; " << s.time_total << " s\n";
+            << s.number_of_cut_edges << " edges, " << s.number_of_cut_leaves << " leaves\n"
+            << "extended surface: " << g.extended_surface.number_of_faces << " faces ("
+            << double(g.extended_surface.number_of_faces) / s.number_of_faces << " x), "
+            << g.extended_surface.rings << " rings, " << g.solves << " " << g.solver << " solves\n"
+            << "ridge: " << ridge->polylines.size() << " polylines, " << g.ridge.junctions << " junctions, "
+            << g.ridge.free_ends << " free ends, " << g.ridge.cycles << " cycles, length "
+            << g.ridge.total_length << "; " << g.time_total << " s\n";
+  if(!o.ridge.empty())
+  {
+    std::vector<std::vector<Point_3> > polylines;
+    for(const auto& pl : ridge->polylines)
+    {
+      polylines.emplace_back();
+      for(const auto& p : pl) polylines.back().push_back(p.point);
+    }
+    Geodesic_ridge::IO::write_polylines(o.ridge, polylines);
+    std::cout << "wrote " << o.ridge << " (" << polylines.size() << " polylines)\n";
+  }
   if(!o.rough_cut.empty())
   {
     std::vector<std::vector<Point_3> > polylines;
@@ -270,9 +346,42 @@ int run(const Options& o)
     Geodesic_ridge::IO::write_polylines(o.rough_cut, polylines);
     std::cout << "wrote " << o.rough_cut << " (" << polylines.size() << " polylines)\n";
   }
+  if(!o.png.empty())
+  {
+    std::vector<Geodesic_ridge::IO::Png_curves<Point_3> > curves(3);
+    Geodesic_ridge::cut_graph_polylines(mesh, r, std::back_inserter(curves[0].polylines));
+    curves[0].rgb = {{60, 90, 230}};
+    curves[0].width_pixels = 1;
+    for(const auto& pl : ridge->polylines)
+    {
+      curves[1].polylines.emplace_back();
+      for(const auto& p : pl) curves[1].polylines.back().push_back(p.point);
+    }
+    curves[1].width_pixels = 3;
+    // the source: a small cross
+    const auto& loc = r.source.location;
+    const auto h = mesh.halfedge(loc.first);
+    const Point_3 a = mesh.point(mesh.source(h)), b = mesh.point(mesh.target(h)), c = mesh.point(mesh.target(mesh.next(h)));
+    const Point_3 src(loc.second[0] * a.x() + loc.second[1] * b.x() + loc.second[2] * c.x(),
+                      loc.second[0] * a.y() + loc.second[1] * b.y() + loc.second[2] * c.y(),
+                      loc.second[0] * a.z() + loc.second[1] * b.z() + loc.second[2] * c.z());
+    const double arm = 0.015 * std::sqrt(CGAL::squared_distance(
+        CGAL::bounding_box(mesh.points().begin(), mesh.points().end()).min(),
+        CGAL::bounding_box(mesh.points().begin(), mesh.points().end()).max()));
+    for(int k = 0; k < 3; ++k)
+    {
+      const double dx = k == 0 ? arm : 0, dy = k == 1 ? arm : 0, dz = k == 2 ? arm : 0;
+      curves[2].polylines.push_back({Point_3(src.x() - dx, src.y() - dy, src.z() - dz),
+                                     Point_3(src.x() + dx, src.y() + dy, src.z() + dz)});
+    }
+    curves[2].rgb = {{20, 170, 40}};
+    curves[2].width_pixels = 5;
+    Geodesic_ridge::IO::write_png(o.png, mesh, mesh.points(), curves);
+    std::cout << "wrote " << o.png << "\n";
+  }
   if(!o.stats.empty())
   {
-    write_stats(o.stats, o, r, read_seconds);
+    write_stats(o.stats, o, *ridge, read_seconds);
     std::cout << "wrote " << o.stats << "\n";
   }
   return 0;

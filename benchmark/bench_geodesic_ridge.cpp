@@ -1,0 +1,95 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// Question: what does the whole pipeline cost, stage by stage, next to one
+// exact geodesic solve (CGAL Surface_mesh_shortest_path) on the original mesh?
+//
+//   bench_geodesic_ridge [--max-faces N] [--tolerance T] [MESH ...]
+//
+// Without MESH arguments it runs every .off file of ../shared/data (or of the
+// repository's data/), smallest first, from vertex 0. Prints a Markdown table.
+// Peak memory is the process's maximum resident set size after that mesh
+// (meshes run in increasing size, so it is that mesh's peak or an earlier one's).
+#include <Geodesic_ridge/IO/read_triangle_mesh.h>
+#include <Geodesic_ridge/compute_geodesic_ridge.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3>                      Mesh;
+namespace fs = std::filesystem;
+
+int main(int argc, char** argv)
+{
+  std::size_t max_faces = 20000;
+  double tolerance = Geodesic_ridge::default_tolerance;
+  std::vector<std::string> files;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(a == "--max-faces" && i + 1 < argc) max_faces = std::stoul(argv[++i]);
+    else if(a == "--tolerance" && i + 1 < argc) tolerance = std::stod(argv[++i]);
+    else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
+    else files.push_back(a);
+  }
+  if(files.empty())
+  {
+    fs::path dir = GEODESIC_RIDGE_SHARED_DATA_DIR;
+    if(!fs::is_directory(dir)) dir = GEODESIC_RIDGE_DATA_DIR;
+    for(const auto& entry : fs::directory_iterator(dir))
+      if(entry.path().extension() == ".off") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end(),
+            [](const std::string& a, const std::string& b) { return fs::file_size(a) < fs::file_size(b); });
+
+  std::cout << "| mesh | F | genus | F(E)/F | rings | solves | stage 1 (s) | extension (s) | solves (s) "
+               "| envelope+dominance (s) | assembly (s) | total (s) | one SMSP on M (s) | total / SMSP | peak RSS (MB) "
+               "| junctions | cycles |\n"
+               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for(const std::string& file : files)
+  {
+    Mesh mesh;
+    try { Geodesic_ridge::IO::read_triangle_mesh(file, mesh); }
+    catch(const Geodesic_ridge::Error& e) { std::cerr << file << ": " << e.what() << "\n"; continue; }
+    if(mesh.number_of_faces() > max_faces) continue;
+    const Mesh::Vertex_index source(0);
+
+    auto t0 = std::chrono::steady_clock::now();
+    std::vector<double> d(mesh.number_of_vertices());
+    Geodesic_ridge::Exact_solver()(mesh, source, CGAL::make_property_map(d));
+    const double t_smsp = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    try
+    {
+      const auto rc = Geodesic_ridge::compute_ridge_curve(mesh, source, Geodesic_ridge::parameters::tolerance(tolerance));
+      const auto& s = rc.statistics;
+      rusage usage;
+      getrusage(RUSAGE_SELF, &usage);
+      char line[1024];
+      std::snprintf(line, sizeof line,
+                    "| %s | %zu | %d | %.2f | %d | %d | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.2f | %.0f | %zu | %zu |\n",
+                    fs::path(file).filename().string().c_str(), mesh.number_of_faces(), s.rough_cut_locus.genus,
+                    double(s.extended_surface.number_of_faces) / mesh.number_of_faces(), s.extended_surface.rings,
+                    s.solves, s.time_rough_cut_locus, s.time_extension, s.time_solve, s.time_envelope,
+                    s.time_assembly, s.time_total, t_smsp, s.time_total / t_smsp, usage.ru_maxrss / 1024.0,
+                    s.ridge.junctions, s.ridge.cycles);
+      std::cout << line << std::flush;
+    }
+    catch(const Geodesic_ridge::Error& e)
+    {
+      std::cout << "| " << fs::path(file).filename().string() << " | " << mesh.number_of_faces()
+                << " | FAILED: " << e.what() << " |\n" << std::flush;
+    }
+  }
+  return 0;
+}

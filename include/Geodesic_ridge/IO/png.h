@@ -1,0 +1,216 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// A picture of a mesh with curves on it, as a PNG, with no dependency: a small
+// z-buffer rasterizer (orthographic, two opposite views side by side, so that a
+// ridge on the far side shows too) and an uncompressed PNG writer.
+#ifndef GEODESIC_RIDGE_IO_PNG_H
+#define GEODESIC_RIDGE_IO_PNG_H
+
+#include <Geodesic_ridge/exceptions.h>
+
+#include <CGAL/number_utils.h>
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace Geodesic_ridge {
+namespace IO {
+
+/// \ingroup PkgGeodesicRidgeIO
+/// A curve to draw: polylines of points with `x()`, `y()`, `z()`, one colour.
+template <class Point_3>
+struct Png_curves
+{
+  std::vector<std::vector<Point_3> > polylines;
+  std::array<unsigned char, 3> rgb = {{220, 30, 30}};
+  int width_pixels = 2;
+};
+
+namespace internal_png {
+
+inline std::uint32_t crc32(const unsigned char* data, std::size_t n, std::uint32_t crc = 0xffffffffu)
+{
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    crc ^= data[i];
+    for(int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  return crc;
+}
+
+inline void put32(std::vector<unsigned char>& out, std::uint32_t v)
+{
+  for(int s = 24; s >= 0; s -= 8) out.push_back(static_cast<unsigned char>(v >> s));
+}
+
+inline void chunk(std::ofstream& os, const char* type, const std::vector<unsigned char>& data)
+{
+  std::vector<unsigned char> buf;
+  put32(buf, static_cast<std::uint32_t>(data.size()));
+  buf.insert(buf.end(), type, type + 4);
+  buf.insert(buf.end(), data.begin(), data.end());
+  const std::uint32_t crc = crc32(buf.data() + 4, buf.size() - 4) ^ 0xffffffffu;
+  put32(buf, crc);
+  os.write(reinterpret_cast<const char*>(buf.data()), static_cast<std::streamsize>(buf.size()));
+}
+
+// RGB image, rows top to bottom; zlib stream of stored (uncompressed) blocks.
+inline void write_rgb_png(const std::string& filename, int w, int h, const std::vector<unsigned char>& rgb)
+{
+  std::ofstream os(filename, std::ios::binary);
+  if(!os) throw Error("cannot open '" + filename + "' for writing");
+  const unsigned char signature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
+  os.write(reinterpret_cast<const char*>(signature), 8);
+  std::vector<unsigned char> ihdr;
+  put32(ihdr, static_cast<std::uint32_t>(w));
+  put32(ihdr, static_cast<std::uint32_t>(h));
+  ihdr.insert(ihdr.end(), {8, 2, 0, 0, 0}); // 8-bit RGB
+  chunk(os, "IHDR", ihdr);
+  std::vector<unsigned char> raw;
+  raw.reserve(static_cast<std::size_t>(h) * (3 * w + 1));
+  for(int y = 0; y < h; ++y)
+  {
+    raw.push_back(0); // filter: none
+    raw.insert(raw.end(), rgb.begin() + static_cast<std::ptrdiff_t>(3 * w * y),
+               rgb.begin() + static_cast<std::ptrdiff_t>(3 * w * (y + 1)));
+  }
+  std::vector<unsigned char> z = {0x78, 0x01};
+  std::uint32_t a = 1, b = 0;
+  for(unsigned char c : raw) { a = (a + c) % 65521u; b = (b + a) % 65521u; }
+  for(std::size_t pos = 0; pos < raw.size() || pos == 0;)
+  {
+    const std::size_t n = std::min<std::size_t>(65535, raw.size() - pos);
+    const bool last = pos + n == raw.size();
+    z.push_back(last ? 1 : 0);
+    z.push_back(static_cast<unsigned char>(n & 0xff));
+    z.push_back(static_cast<unsigned char>(n >> 8));
+    z.push_back(static_cast<unsigned char>(~n & 0xff));
+    z.push_back(static_cast<unsigned char>((~n >> 8) & 0xff));
+    z.insert(z.end(), raw.begin() + static_cast<std::ptrdiff_t>(pos), raw.begin() + static_cast<std::ptrdiff_t>(pos + n));
+    pos += n;
+    if(last) break;
+  }
+  put32(z, (b << 16) | a);
+  chunk(os, "IDAT", z);
+  chunk(os, "IEND", {});
+  if(!os) throw Error("cannot write '" + filename + "'");
+}
+
+} // namespace internal_png
+
+/// \ingroup PkgGeodesicRidgeIO
+/// Renders the triangle mesh (grey, Lambert-shaded) and the curves on it from
+/// two opposite directions (left: looking along -view, right: along +view), and
+/// writes a PNG of `2*size` × `size` pixels. Curves are drawn where they are
+/// not hidden by the surface (a small depth offset keeps curves on it visible).
+template <class TriangleMesh, class VertexPointMap, class Point_3>
+void write_png(const std::string& filename, const TriangleMesh& tm, VertexPointMap vpm,
+               const std::vector<Png_curves<Point_3> >& curves, int size = 600,
+               std::array<double, 3> view = {{0.3, -0.4, -1.0}})
+{
+  typedef std::array<double, 3> V3;
+  auto sub = [](const V3& a, const V3& b) { return V3{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; };
+  auto cross = [](const V3& a, const V3& b) {
+    return V3{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+  };
+  auto dot = [](const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  auto unit = [&](V3 a) { const double l = std::sqrt(dot(a, a)); for(double& x : a) x /= l; return a; };
+  auto to3 = [](const auto& p) { return V3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}}; };
+
+  V3 lo = {{1e300, 1e300, 1e300}}, hi = {{-1e300, -1e300, -1e300}};
+  for(auto v : vertices(tm))
+  {
+    const V3 p = to3(get(vpm, v));
+    for(int k = 0; k < 3; ++k) { lo[k] = std::min(lo[k], p[k]); hi[k] = std::max(hi[k], p[k]); }
+  }
+  const V3 center = {{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2}};
+  const double radius = std::sqrt(dot(sub(hi, lo), sub(hi, lo))) / 2;
+  const int W = 2 * size, H = size;
+  std::vector<unsigned char> rgb(static_cast<std::size_t>(3 * W * H), 255);
+  std::vector<double> depth(static_cast<std::size_t>(W * H), std::numeric_limits<double>::infinity());
+
+  for(int side = 0; side < 2; ++side)
+  {
+    const V3 d = unit(side == 0 ? view : V3{{-view[0], -view[1], -view[2]}}); // looking direction
+    const V3 up0 = std::abs(d[1]) < 0.9 ? V3{{0, 1, 0}} : V3{{0, 0, 1}};
+    const V3 right = unit(cross(d, up0)), up = cross(right, d);
+    const int x0 = side * size;
+    auto project = [&](const V3& p, double& sx, double& sy, double& sz) {
+      const V3 q = sub(p, center);
+      sx = x0 + size / 2.0 + dot(q, right) / radius * size * 0.47;
+      sy = size / 2.0 - dot(q, up) / radius * size * 0.47;
+      sz = dot(q, d);
+    };
+    for(auto f : faces(tm))
+    {
+      const auto h = halfedge(f, tm);
+      const V3 p[3] = {to3(get(vpm, source(h, tm))), to3(get(vpm, target(h, tm))),
+                       to3(get(vpm, target(next(h, tm), tm)))};
+      V3 n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
+      const double nl = std::sqrt(dot(n, n));
+      if(nl == 0) continue;
+      for(double& x : n) x /= nl;
+      const double shade = 0.35 + 0.6 * std::abs(dot(n, d));
+      double sx[3], sy[3], sz[3];
+      for(int k = 0; k < 3; ++k) project(p[k], sx[k], sy[k], sz[k]);
+      const int xmin = std::max(x0, static_cast<int>(std::floor(std::min({sx[0], sx[1], sx[2]}))));
+      const int xmax = std::min(x0 + size - 1, static_cast<int>(std::ceil(std::max({sx[0], sx[1], sx[2]}))));
+      const int ymin = std::max(0, static_cast<int>(std::floor(std::min({sy[0], sy[1], sy[2]}))));
+      const int ymax = std::min(H - 1, static_cast<int>(std::ceil(std::max({sy[0], sy[1], sy[2]}))));
+      const double area = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sx[2] - sx[0]) * (sy[1] - sy[0]);
+      if(area == 0) continue;
+      for(int y = ymin; y <= ymax; ++y)
+        for(int x = xmin; x <= xmax; ++x)
+        {
+          const double px = x + 0.5, py = y + 0.5;
+          const double w0 = ((sx[1] - px) * (sy[2] - py) - (sx[2] - px) * (sy[1] - py)) / area;
+          const double w1 = ((sx[2] - px) * (sy[0] - py) - (sx[0] - px) * (sy[2] - py)) / area;
+          const double w2 = 1 - w0 - w1;
+          if(w0 < 0 || w1 < 0 || w2 < 0) continue;
+          const double z = w0 * sz[0] + w1 * sz[1] + w2 * sz[2];
+          const std::size_t i = static_cast<std::size_t>(y * W + x);
+          if(z >= depth[i]) continue;
+          depth[i] = z;
+          const unsigned char g = static_cast<unsigned char>(255 * std::min(1.0, shade));
+          rgb[3 * i] = g; rgb[3 * i + 1] = g; rgb[3 * i + 2] = static_cast<unsigned char>(std::min(255, g + 12));
+        }
+    }
+    const double offset = 0.01 * radius;
+    for(const auto& c : curves)
+      for(const auto& pl : c.polylines)
+        for(std::size_t i = 0; i + 1 < pl.size(); ++i)
+        {
+          double ax, ay, az, bx, by, bz;
+          project(to3(pl[i]), ax, ay, az);
+          project(to3(pl[i + 1]), bx, by, bz);
+          const int steps = 1 + static_cast<int>(std::max(std::abs(bx - ax), std::abs(by - ay)));
+          for(int s = 0; s <= steps; ++s)
+          {
+            const double t = double(s) / steps;
+            const double x = ax + t * (bx - ax), y = ay + t * (by - ay), z = az + t * (bz - az);
+            for(int dy = -c.width_pixels / 2; dy <= c.width_pixels / 2; ++dy)
+              for(int dx = -c.width_pixels / 2; dx <= c.width_pixels / 2; ++dx)
+              {
+                const int X = static_cast<int>(x) + dx, Y = static_cast<int>(y) + dy;
+                if(X < x0 || X >= x0 + size || Y < 0 || Y >= H) continue;
+                const std::size_t i2 = static_cast<std::size_t>(Y * W + X);
+                if(z - offset > depth[i2]) continue;
+                rgb[3 * i2] = c.rgb[0]; rgb[3 * i2 + 1] = c.rgb[1]; rgb[3 * i2 + 2] = c.rgb[2];
+              }
+          }
+        }
+  }
+  internal_png::write_rgb_png(filename, W, H, rgb);
+}
+
+} // namespace IO
+} // namespace Geodesic_ridge
+
+#endif

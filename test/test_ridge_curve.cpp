@@ -1,0 +1,300 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// The ridge curve (stage 3, and the whole pipeline) against analytic oracles
+// (DESIGN.md §6):
+//  * doubly covered square: the cut locus of a source on the top sheet is the
+//    Voronoi diagram of the source's four mirror images, on the bottom sheet;
+//  * convex polyhedra (subdivided box, tetrahedron, octahedron; perturbed in
+//    their flat faces): every corner but the source is a leaf of the cut locus;
+//  * tori and higher genus: one component with 2g independent cycles;
+//  * a sweep of tolerances: connected, 2g cycles, consistent surface locations;
+//  * sources given as Face_locations inside a face and on an edge.
+// Connectivity and cycles are recomputed here from the output polylines, not
+// read from the statistics.
+#include "support/analytic_meshes.h"
+
+#include <Geodesic_ridge/IO/read_triangle_mesh.h>
+#include <Geodesic_ridge/compute_geodesic_ridge.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace {
+
+using namespace Geodesic_ridge::testing;
+typedef Mesh::Vertex_index vertex_descriptor;
+typedef Mesh::Face_index   face_descriptor;
+typedef std::pair<face_descriptor, std::array<double, 3> > Face_location;
+typedef decltype(Geodesic_ridge::compute_ridge_curve(std::declval<const Mesh&>(), vertex_descriptor(0)))
+    Result;
+typedef Geodesic_ridge::Ridge_point<Point_3> Ridge_point;
+
+Mesh load(const std::string& name)
+{
+  Mesh m;
+  Geodesic_ridge::IO::read_triangle_mesh(std::string(GEODESIC_RIDGE_DATA_DIR) + "/" + name, m);
+  return m;
+}
+
+int genus(const Mesh& m)
+{
+  const long chi = static_cast<long>(m.number_of_vertices()) - static_cast<long>(m.number_of_edges()) +
+                   static_cast<long>(m.number_of_faces());
+  return static_cast<int>((2 - chi) / 2);
+}
+
+double bbox_diagonal(const Mesh& m)
+{
+  CGAL::Bbox_3 b;
+  for(auto v : m.vertices()) b += m.point(v).bbox();
+  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
+                   CGAL::square(b.zmax() - b.zmin()));
+}
+
+// Runs the pipeline; an Algorithm_error is reported as a failed check (with
+// its message) and gives no result.
+template <class Source>
+std::optional<Result> run(const Mesh& m, const Source& s, double tol, const std::string& what)
+{
+  try
+  {
+    return Geodesic_ridge::compute_ridge_curve(m, s, Geodesic_ridge::parameters::tolerance(tol));
+  }
+  catch(const Geodesic_ridge::Algorithm_error& e)
+  {
+    FAIL_CHECK(what << " (tolerance " << tol << "): Algorithm_error: " << e.what());
+  }
+  return std::nullopt;
+}
+
+// The ridge graph as the polylines give it: nodes are identified by their
+// exact 3D point (a node shared by polylines is one Ridge_point, copied).
+struct Ridge_topology
+{
+  std::size_t nodes = 0, edges = 0, components = 0, cycles = 0, leaves = 0, junctions = 0;
+};
+
+Ridge_topology ridge_topology(const std::vector<std::vector<Ridge_point> >& polylines)
+{
+  std::map<std::tuple<double, double, double>, std::size_t> id;
+  auto node = [&](const Point_3& p) {
+    return id.emplace(std::make_tuple(p.x(), p.y(), p.z()), id.size()).first->second;
+  };
+  std::vector<std::pair<std::size_t, std::size_t> > edges;
+  for(const auto& pl : polylines)
+    for(std::size_t i = 0; i + 1 < pl.size(); ++i)
+    {
+      const std::size_t a = node(pl[i].point), b = node(pl[i + 1].point);
+      if(a != b) edges.emplace_back(a, b);
+    }
+  Ridge_topology t;
+  t.nodes = id.size();
+  t.edges = edges.size();
+  std::vector<std::size_t> parent(t.nodes), degree(t.nodes, 0);
+  for(std::size_t i = 0; i < t.nodes; ++i) parent[i] = i;
+  std::function<std::size_t(std::size_t)> find = [&](std::size_t x) {
+    return parent[x] == x ? x : parent[x] = find(parent[x]);
+  };
+  for(const auto& e : edges)
+  {
+    parent[find(e.first)] = find(e.second);
+    ++degree[e.first];
+    ++degree[e.second];
+  }
+  for(std::size_t i = 0; i < t.nodes; ++i)
+  {
+    t.components += find(i) == i;
+    t.leaves += degree[i] == 1;
+    t.junctions += degree[i] >= 3;
+  }
+  t.cycles = t.edges + t.components - t.nodes;
+  return t;
+}
+
+// Largest distance between a ridge point's 3D point and the barycentric
+// combination of its face's corners.
+double max_location_error(const Mesh& m, const std::vector<std::vector<Ridge_point> >& polylines)
+{
+  double err = 0;
+  for(const auto& pl : polylines)
+    for(const auto& p : pl)
+    {
+      if(p.face >= m.number_of_faces()) return std::numeric_limits<double>::infinity();
+      const auto h = m.halfedge(face_descriptor(static_cast<Mesh::size_type>(p.face)));
+      const Point_3 a = m.point(m.source(h)), b = m.point(m.target(h)), c = m.point(m.target(m.next(h)));
+      const auto& w = p.barycentric;
+      if(!(w[0] >= -1e-12 && w[1] >= -1e-12 && w[2] >= -1e-12 && std::abs(w[0] + w[1] + w[2] - 1) <= 1e-9))
+        return std::numeric_limits<double>::infinity();
+      const Point_3 q(w[0] * a.x() + w[1] * b.x() + w[2] * c.x(), w[0] * a.y() + w[1] * b.y() + w[2] * c.y(),
+                      w[0] * a.z() + w[1] * b.z() + w[2] * c.z());
+      err = std::max(err, std::sqrt(CGAL::squared_distance(p.point, q)));
+    }
+  return err;
+}
+
+// The checks every ridge must pass: connected (as the polylines say), a tree
+// with 2g cycles, and consistent surface locations.
+void check_ridge_validity(const Mesh& m, const Result& rc, const std::string& what)
+{
+  INFO(what);
+  const int g = genus(m);
+  const Ridge_topology t = ridge_topology(rc.polylines);
+  INFO("ridge: " << t.nodes << " nodes, " << t.edges << " edges, " << t.components << " components, "
+                 << t.cycles << " cycles, " << t.leaves << " leaves, " << t.junctions << " junctions");
+  CHECK(!rc.polylines.empty());
+  CHECK(t.components == 1);
+  CHECK(t.cycles == static_cast<std::size_t>(2 * g));
+  CHECK(rc.statistics.ridge.components == 1);
+  CHECK(rc.statistics.ridge.cycles == static_cast<std::size_t>(2 * g));
+  CHECK(rc.statistics.ridge.ridge_segments == t.edges);
+  CHECK(max_location_error(m, rc.polylines) <= 1e-9 * bbox_diagonal(m));
+}
+
+// Points along the ridge polylines: every vertex and `k` - 1 points inside
+// every segment (a segment is straight inside one face).
+template <class F>
+void for_each_ridge_sample(const std::vector<std::vector<Ridge_point> >& polylines, int k, F f)
+{
+  for(const auto& pl : polylines)
+    for(std::size_t i = 0; i < pl.size(); ++i)
+    {
+      f(pl[i].point, pl[i].face);
+      if(i + 1 == pl.size()) continue;
+      for(int j = 1; j < k; ++j)
+      {
+        const double t = double(j) / k;
+        const Point_3& a = pl[i].point; const Point_3& b = pl[i + 1].point;
+        // the segment lies in both endpoint faces' closure; pl[i].face or pl[i+1].face holds it
+        f(Point_3(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()), a.z() + t * (b.z() - a.z())),
+          pl[i + 1].face);
+      }
+    }
+}
+
+double distance_to_ridge(const Point_3& p, const std::vector<std::vector<Ridge_point> >& polylines)
+{
+  double d2 = std::numeric_limits<double>::infinity();
+  for(const auto& pl : polylines)
+  {
+    if(pl.size() == 1) d2 = std::min(d2, CGAL::squared_distance(p, pl[0].point));
+    for(std::size_t i = 0; i + 1 < pl.size(); ++i)
+      d2 = std::min(d2, CGAL::squared_distance(p, K::Segment_3(pl[i].point, pl[i + 1].point)));
+  }
+  return std::sqrt(d2);
+}
+
+double percentile(std::vector<double> v, double q)
+{
+  if(v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<std::size_t>(q * (v.size() - 1) + 0.5))];
+}
+
+// ---------------------------------------------------------------------------
+
+struct Square_measure
+{
+  double max_error = 0, p95_error = 0;      // ridge -> analytic cut locus, in mean edges
+  double max_miss = 0, p95_miss = 0;        // analytic cut locus -> ridge, in mean edges
+  double covered = 0;                       // fraction of analytic samples within the coverage radius
+  std::size_t top_points = 0;               // ridge samples strictly inside the top sheet
+};
+
+// Ridge of a source on the top sheet against the oracle.
+Square_measure measure_square(const Doubly_covered_square& sq, const Result& rc, double a, double b,
+                              double coverage_radius)
+{
+  const double h = mean_edge_length(sq.mesh);
+  const Doubly_covered_square_oracle oracle(a, b);
+  Square_measure r;
+  std::vector<double> err;
+  for_each_ridge_sample(rc.polylines, 4, [&](const Point_3& p, std::size_t f) {
+    const std::array<double, 2> xy = {{p.x(), p.y()}};
+    double d = oracle.distance_to_cut_locus(xy);
+    const double to_border = std::min(std::min(p.x(), 1 - p.x()), std::min(p.y(), 1 - p.y()));
+    if(!sq.bottom_face[f] && to_border > 1e-9)
+    {
+      // on the top sheet: at least as far (intrinsically) as the border is
+      ++r.top_points;
+      d = std::max(d, to_border);
+    }
+    err.push_back(d / h);
+  });
+  r.max_error = err.empty() ? 0 : *std::max_element(err.begin(), err.end());
+  r.p95_error = percentile(err, 0.95);
+  std::vector<double> miss;
+  for(const auto& e : oracle.edges)
+  {
+    const int k = std::max(2, static_cast<int>(std::ceil(e.length() / (0.1 * h))));
+    for(int j = 0; j <= k; ++j)
+    {
+      const double t = double(j) / k;
+      const Point_3 p(e.a[0] + t * (e.b[0] - e.a[0]), e.a[1] + t * (e.b[1] - e.a[1]), 0);
+      miss.push_back(distance_to_ridge(p, rc.polylines) / h);
+    }
+  }
+  r.max_miss = miss.empty() ? 0 : *std::max_element(miss.begin(), miss.end());
+  r.p95_miss = percentile(miss, 0.95);
+  std::size_t in = 0;
+  for(double d : miss) in += d <= coverage_radius;
+  r.covered = miss.empty() ? 1 : double(in) / miss.size();
+  return r;
+}
+
+} // namespace
+
+TEST_CASE("doubly covered square: the ridge is the Voronoi diagram of the mirror images", "[ridge_curve]")
+{
+  // n x n grid, perturbation (grid steps), seed, tolerance
+  struct Case { int n; double perturbation; unsigned seed; };
+#ifdef GEODESIC_RIDGE_SANITIZE
+  const std::vector<Case> cases = {{12, 0, 0}, {12, 0.25, 20260101}};
+#else
+  const std::vector<Case> cases = {{10, 0, 0}, {16, 0, 0}, {12, 0.25, 20260101}, {16, 0.25, 20260102}};
+#endif
+  const double tolerance = 0.001;
+  for(const Case& c : cases)
+  {
+    const unsigned seed = test_seed(c.seed);
+    const Doubly_covered_square sq = make_doubly_covered_square(c.n, c.perturbation, seed);
+    // sources: interior top vertices, away from the symmetric positions
+    const int n = c.n;
+    const std::vector<std::array<int, 2> > grid_sources = {
+        {{n / 4, n / 3}}, {{n / 2 + 1, n / 4}}, {{n / 3, 2 * n / 3 + 1}}, {{3 * n / 4, 3 * n / 4 - 1}}};
+    for(const auto& gs : grid_sources)
+    {
+      const vertex_descriptor s = sq.top[gs[0] + (n + 1) * gs[1]];
+      const double a = sq.mesh.point(s).x(), b = sq.mesh.point(s).y();
+      std::ostringstream what;
+      what << "doubly covered square n=" << n << " perturbation=" << c.perturbation << " seed=" << seed
+           << " source vertex " << s << " (" << a << ", " << b << ")";
+      INFO(what.str());
+      const auto t0 = std::chrono::steady_clock::now();
+      const auto rc = run(sq.mesh, s, tolerance, what.str());
+      if(!rc) continue;
+      check_ridge_validity(sq.mesh, *rc, what.str());
+      const Square_measure r = measure_square(sq, *rc, a, b, 0.5);
+      std::cout << what.str() << ": ridge->analytic max " << r.max_error << " p95 " << r.p95_error
+                << " | analytic->ridge max " << r.max_miss << " p95 " << r.p95_miss << " covered(0.5) "
+                << r.covered << " | top pts " << r.top_points << " | segs " << rc->statistics.ridge.ridge_segments
+                << " junctions " << rc->statistics.ridge.junctions << " free ends " << rc->statistics.ridge.free_ends
+                << " regions " << rc->statistics.ridge.regions_before_merge << " merged "
+                << rc->statistics.ridge.merged_segments << " dropped " << rc->statistics.ridge.dropped_components
+                << " | " << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+      CHECK(r.top_points == 0);
+      CHECK(r.max_error <= 0.25);
+      CHECK(r.max_miss <= 0.5);
+    }
+  }
+}
