@@ -78,7 +78,7 @@ int main(int argc, char** argv)
       char line[1024];
       std::snprintf(line, sizeof line,
                     "| %s | %zu | %d | %.2f | %d | %d | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.2f | %.0f | %zu | %zu |\n",
-                    fs::path(file).filename().string().c_str(), mesh.number_of_faces(), s.rough_cut_locus.genus,
+                    fs::path(file).filename().string().c_str(), std::size_t(mesh.number_of_faces()), s.rough_cut_locus.genus,
                     double(s.extended_surface.number_of_faces) / mesh.number_of_faces(), s.extended_surface.rings,
                     s.solves, s.time_rough_cut_locus, s.time_extension, s.time_solve, s.time_envelope,
                     s.time_assembly, s.time_total, t_smsp, s.time_total / t_smsp, usage.ru_maxrss / 1024.0,

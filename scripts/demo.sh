@@ -7,9 +7,12 @@ bash scripts/install_dependencies.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --target geodesic_ridge -j2
 mkdir -p out
-./build/examples/geodesic_ridge data/bunny_1k.off --source-vertex 0 \
-    --rough-cut out/bunny_1k.rough_cut.polylines.txt --stats out/bunny_1k.stats.json
+./build/examples/geodesic_ridge data/eight.off --source-vertex 3 \
+    --ridge out/eight.ridge.polylines.txt --rough-cut out/eight.rough_cut.polylines.txt \
+    --stats out/eight.stats.json --png out/eight.png
 echo
 echo "Outputs are in $(pwd)/out:"
-echo "  out/bunny_1k.rough_cut.polylines.txt  the rough cut locus (CGAL polylines: n x1 y1 z1 ... per line)"
-echo "  out/bunny_1k.stats.json               counts, timings and parameters"
+echo "  out/eight.png                        picture: ridge (red), rough cut (blue), source (green), two opposite views"
+echo "  out/eight.ridge.polylines.txt        the geodesic ridge (CGAL polylines: n x1 y1 z1 ... per line)"
+echo "  out/eight.rough_cut.polylines.txt    the rough cut locus of stage 1"
+echo "  out/eight.stats.json                 counts, timings and parameters of every stage"

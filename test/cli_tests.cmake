@@ -35,6 +35,8 @@ cli_failure(tolerance_negative    "out of range" ${CLI} ${D}/torus_1k.off --sour
 cli_failure(tolerance_not_number  "tolerance 'x1' is not a finite number" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance x1)
 cli_failure(tolerance_nan         "tolerance 'nan' is not a finite number" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance nan)
 cli_failure(unwritable_output     "cannot open" ${CLI} ${D}/torus_1k.off --source-vertex 0 --rough-cut /nonexistent-dir/x.txt)
+cli_failure(unknown_solver        "unknown solver 'fmm'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm)
+cli_failure(unwritable_png        "cannot open" ${CLI} ${D}/torus_1k.off --source-vertex 0 --png /nonexistent-dir/x.png)
 
 # Good input: every bundled mesh, from a vertex and from a surface point.
 set(OUTDIR ${CMAKE_CURRENT_BINARY_DIR}/cli_out)

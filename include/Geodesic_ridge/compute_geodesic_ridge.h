@@ -24,6 +24,7 @@ namespace Geodesic_ridge {
 namespace internal_np {
 struct solver_t {};
 struct initial_rings_t {};
+struct extension_step_t {};
 struct maximum_rings_t {};
 } // namespace internal_np
 
@@ -43,8 +44,16 @@ inline CGAL::Named_function_parameters<int, internal_np::initial_rings_t> initia
   return CGAL::Named_function_parameters<int, internal_np::initial_rings_t>(k);
 }
 /// \ingroup PkgGeodesicRidgeNamedParameters
-/// Hard cap on extension rings (default 8): rings beyond the initial ones grow
-/// only where copies of the outermost ring still win area of their face.
+/// Rings grown, after a solve, around the outermost copies that still win area
+/// of their face, before the next solve (default 4).
+inline CGAL::Named_function_parameters<int, internal_np::extension_step_t> extension_step(int k)
+{
+  return CGAL::Named_function_parameters<int, internal_np::extension_step_t>(k);
+}
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// Hard cap on extension rings (default 7, so at most two solves with the
+/// default initial rings and step): rings beyond the initial ones grow only
+/// where copies of the outermost ring still win area of their face.
 inline CGAL::Named_function_parameters<int, internal_np::maximum_rings_t> maximum_rings(int k)
 {
   return CGAL::Named_function_parameters<int, internal_np::maximum_rings_t>(k);
@@ -97,9 +106,11 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   typedef typename boost::property_traits<std::decay_t<decltype(vpm)> >::value_type Point;
   const auto solver = choose_parameter(get_parameter(np, internal_np::solver_t()), Exact_solver());
   const int initial_rings = choose_parameter(get_parameter(np, internal_np::initial_rings_t()), 3);
-  const int maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), 8);
-  if(initial_rings < 0 || maximum_rings < initial_rings)
-    throw Invalid_parameter_error("extension rings: need 0 <= initial_rings <= maximum_rings");
+  const int extension_step = choose_parameter(get_parameter(np, internal_np::extension_step_t()), 4);
+  const int maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), 7);
+  if(initial_rings < 0 || maximum_rings < initial_rings || extension_step < 1)
+    throw Invalid_parameter_error(
+        "extension rings: need 0 <= initial_rings <= maximum_rings and extension_step >= 1");
 
   Ridge_curve<TriangleMesh, Point> result;
   Geodesic_ridge_statistics& st = result.statistics;
@@ -193,8 +204,16 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     st.outer_copies_winning = winning;
     st.time_envelope += seconds_since(t0);
     if(winning == 0 || builder.statistics().rings >= maximum_rings) break;
+    // grow a band of `extension_step` rings around the winners: each ring from
+    // the copies the previous one added
     t0 = std::chrono::steady_clock::now();
-    builder.grow_ring(&grow_from);
+    for(int step = 0; step < extension_step && builder.statistics().rings < maximum_rings; ++step)
+    {
+      const std::size_t before = builder.number_of_copies();
+      builder.grow_ring(&grow_from);
+      grow_from.assign(builder.number_of_copies(), 0);
+      for(std::size_t c = before; c < builder.number_of_copies(); ++c) grow_from[c] = 1;
+    }
     st.time_extension += seconds_since(t0);
   }
   st.extended_surface = E.statistics;
@@ -222,7 +241,8 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 ///
 /// \param np named parameters: `Geodesic_ridge::parameters::tolerance(t)`,
 ///   `solver(s)` (a `GeodesicSolver`, default `Exact_solver`), `initial_rings(k)`
-///   (default 3), `maximum_rings(k)` (default 8), then CGAL's `vertex_point_map`,
+///   (default 3), `extension_step(k)` (default 4), `maximum_rings(k)` (default 7),
+///   then CGAL's `vertex_point_map`,
 ///   `vertex_index_map`, `face_index_map`, `edge_index_map`.
 /// \post the ridge is connected, a tree on a genus-0 surface, with exactly 2g
 ///   independent cycles on genus g (`Algorithm_error` otherwise).

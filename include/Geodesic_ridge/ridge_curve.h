@@ -145,7 +145,18 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
   for(std::size_t f = 0; f < nf; ++f)
   {
     const Face_copies& fc = face_copies[f];
-    envelopes[f] = compute_lower_envelope<Q>(fc.fields);
+    if(fc.fields.size() == 1)
+    {
+      // one copy: its cell is the whole triangle (most faces; no clipping needed)
+      Envelope_cell<Q> cell;
+      cell.copy = 0;
+      cell.polygon = {{{Q(1), Q(0), Q(0)}}, {{Q(0), Q(1), Q(0)}}, {{Q(0), Q(0), Q(1)}}};
+      cell.edge_label = {triangle_edge_label(0), triangle_edge_label(1), triangle_edge_label(2)};
+      envelopes[f].cells.assign(1, cell);
+      envelopes[f].segments.clear();
+    }
+    else
+      envelopes[f] = compute_lower_envelope<Q>(fc.fields);
     if(fc.copies.size() > 1) ++st.faces_with_several_copies;
     st.surviving_copies += envelopes[f].cells.size();
     for(const auto& c : envelopes[f].cells)
