@@ -9,6 +9,12 @@
 #include <Geodesic_ridge/source.h>
 #include <Geodesic_ridge/mesh_validation.h>
 #include <Geodesic_ridge/rough_cut_locus.h>
+#include <Geodesic_ridge/extended_surface.h>
+#include <Geodesic_ridge/lower_envelope.h>
+#include <Geodesic_ridge/ridge_curve.h>
+#include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/solvers/Exact_solver.h>
+#include <Geodesic_ridge/IO/png.h>
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/IO/polylines.h>
 

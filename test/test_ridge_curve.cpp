@@ -208,12 +208,13 @@ struct Square_measure
   double max_error = 0, p95_error = 0;      // ridge -> analytic cut locus, in mean edges
   double max_miss = 0, p95_miss = 0;        // analytic cut locus -> ridge, in mean edges
   double covered = 0;                       // fraction of analytic samples within the coverage radius
+  double precise = 0;                       // fraction of ridge samples within the precision radius
   std::size_t top_points = 0;               // ridge samples strictly inside the top sheet
 };
 
 // Ridge of a source on the top sheet against the oracle.
 Square_measure measure_square(const Doubly_covered_square& sq, const Result& rc, double a, double b,
-                              double coverage_radius)
+                              double precision_radius, double coverage_radius)
 {
   const double h = mean_edge_length(sq.mesh);
   const Doubly_covered_square_oracle oracle(a, b);
@@ -233,6 +234,9 @@ Square_measure measure_square(const Doubly_covered_square& sq, const Result& rc,
   });
   r.max_error = err.empty() ? 0 : *std::max_element(err.begin(), err.end());
   r.p95_error = percentile(err, 0.95);
+  std::size_t close = 0;
+  for(double d : err) close += d <= precision_radius;
+  r.precise = err.empty() ? 1 : double(close) / err.size();
   std::vector<double> miss;
   for(const auto& e : oracle.edges)
   {
@@ -254,47 +258,237 @@ Square_measure measure_square(const Doubly_covered_square& sq, const Result& rc,
 
 } // namespace
 
+// Doubly covered square, source at interior vertices of the top sheet (away
+// from the symmetric positions x = 1/2, y = 1/2, where the two junctions of
+// the Voronoi diagram merge). Precision: every ridge sample (polyline points
+// and 3 points inside each segment) within 0.25 mean edges of the analytic
+// cut locus (a sample inside the top sheet counts with at least its distance
+// to the border). Coverage: the analytic Voronoi edges sampled every 0.1 mean
+// edges, each sample within 0.5 mean edges of the computed ridge (3D distance
+// to its segments; both sheets lie in z = 0, and top-sheet segments are
+// already charged by the precision check).
 TEST_CASE("doubly covered square: the ridge is the Voronoi diagram of the mirror images", "[ridge_curve]")
 {
-  // n x n grid, perturbation (grid steps), seed, tolerance
   struct Case { int n; double perturbation; unsigned seed; };
 #ifdef GEODESIC_RIDGE_SANITIZE
   const std::vector<Case> cases = {{12, 0, 0}, {12, 0.25, 20260101}};
+  const std::vector<double> tolerances = {0.025};
 #else
   const std::vector<Case> cases = {{10, 0, 0}, {16, 0, 0}, {12, 0.25, 20260101}, {16, 0.25, 20260102}};
+  const std::vector<double> tolerances = {0.01, 0.025};
 #endif
-  const double tolerance = std::getenv("GR_TOL") ? std::atof(std::getenv("GR_TOL")) : 0.001;
+  const double precision_radius = 0.25, coverage_radius = 0.5; // in mean edge lengths
   for(const Case& c : cases)
   {
     const unsigned seed = test_seed(c.seed);
     const Doubly_covered_square sq = make_doubly_covered_square(c.n, c.perturbation, seed);
-    // sources: interior top vertices, away from the symmetric positions
     const int n = c.n;
     const std::vector<std::array<int, 2> > grid_sources = {
         {{n / 4, n / 3}}, {{n / 2 + 1, n / 4}}, {{n / 3, 2 * n / 3 + 1}}, {{3 * n / 4, 3 * n / 4 - 1}}};
-    for(const auto& gs : grid_sources)
+    for(double tol : tolerances)
+      for(const auto& gs : grid_sources)
+      {
+        const vertex_descriptor s = sq.top[gs[0] + (n + 1) * gs[1]];
+        const double a = sq.mesh.point(s).x(), b = sq.mesh.point(s).y();
+        std::ostringstream what;
+        what << "doubly covered square n=" << n << " perturbation=" << c.perturbation << " seed=" << seed
+             << " tolerance=" << tol << " source vertex " << s << " (" << a << ", " << b << ")";
+        INFO(what.str());
+        const auto rc = run(sq.mesh, s, tol, what.str());
+        if(!rc) continue;
+        check_ridge_validity(sq.mesh, *rc, what.str());
+        const Square_measure r = measure_square(sq, *rc, a, b, precision_radius, coverage_radius);
+        const auto& st = rc->statistics.ridge;
+        std::ostringstream measured;
+        measured << "ridge->analytic max " << r.max_error << " p95 " << r.p95_error << " within "
+                 << precision_radius << ": " << r.precise << " | analytic->ridge max " << r.max_miss << " p95 "
+                 << r.p95_miss << " within " << coverage_radius << ": " << r.covered << " | top-sheet samples "
+                 << r.top_points << " | junctions " << st.junctions << " free ends " << st.free_ends
+                 << " regions " << st.regions_before_merge << " dropped " << st.dropped_components;
+        INFO(measured.str());
+        std::cout << "[ridge_curve] " << what.str() << ": " << measured.str() << "\n";
+        // KNOWN FAILURE (reported, 2026): on these flat grids the rough cut
+        // locus keeps significant zigzag branches of the Dijkstra tree's dual
+        // far from the true cut locus (both sheets). Each such slit leaves the
+        // face copies on its two sides shadowed at different corners (one copy
+        // ~0.25 mean edges too long at the slit's vertices, the other at the
+        // far corner): neither dominates, and their envelope boundary is
+        // output as ridge, a spurious branch parallel to the slit (max 2.5-6
+        // mean edges from the analytic locus, also on the top sheet). Some
+        // true branches are dropped (detached from the main component).
+        CHECK(r.top_points == 0);
+        CHECK(r.max_error <= precision_radius);
+        CHECK(r.max_miss <= coverage_radius);
+      }
+  }
+}
+
+// Convex polyhedra: every corner other than the source is a leaf of the cut
+// locus, so the ridge must come within one mean edge of it (3D distance from
+// the corner to the ridge segments). The ridge is a tree.
+TEST_CASE("convex polyhedra: the ridge reaches every corner", "[ridge_curve]")
+{
+  struct Case { std::string name; Polyhedron_description p; int n; double perturbation; unsigned seed; };
+#ifdef GEODESIC_RIDGE_SANITIZE
+  const std::vector<Case> cases = {{"cube", box_corners_and_faces(), 6, 0, 0},
+                                   {"tetrahedron", regular_tetrahedron_corners_and_faces(), 8, 0.25, 20260201}};
+#else
+  const std::vector<Case> cases = {
+      {"cube", box_corners_and_faces(), 8, 0, 0},
+      {"cube (perturbed)", box_corners_and_faces(), 8, 0.25, 20260201},
+      {"box 2x1x0.7 (perturbed)", box_corners_and_faces(2, 1, 0.7), 8, 0.25, 20260202},
+      {"tetrahedron", regular_tetrahedron_corners_and_faces(), 12, 0, 0},
+      {"tetrahedron (perturbed)", regular_tetrahedron_corners_and_faces(), 12, 0.25, 20260203},
+      {"octahedron (perturbed)", regular_octahedron_corners_and_faces(), 8, 0.25, 20260204}};
+#endif
+  const double tol = Geodesic_ridge::default_tolerance;
+  for(const Case& c : cases)
+  {
+    const unsigned seed = test_seed(c.seed);
+    const Subdivided_polyhedron poly = make_subdivided_polyhedron(c.p, c.n, c.perturbation, seed);
+    const Mesh& m = poly.mesh;
+    const double h = mean_edge_length(m);
+    // sources: a corner, and two vertices inside faces
+    const std::size_t nv = m.number_of_vertices();
+    std::vector<vertex_descriptor> sources = {poly.corner_vertices[0]};
+    for(std::size_t k : {nv / 3, (2 * nv) / 3 + 1})
     {
-      const vertex_descriptor s = sq.top[gs[0] + (n + 1) * gs[1]];
-      const double a = sq.mesh.point(s).x(), b = sq.mesh.point(s).y();
+      vertex_descriptor v(static_cast<Mesh::size_type>(k));
+      while(std::find(poly.corner_vertices.begin(), poly.corner_vertices.end(), v) != poly.corner_vertices.end())
+        v = vertex_descriptor(static_cast<Mesh::size_type>((std::size_t(v) + 1) % nv));
+      sources.push_back(v);
+    }
+    for(vertex_descriptor s : sources)
+    {
       std::ostringstream what;
-      what << "doubly covered square n=" << n << " perturbation=" << c.perturbation << " seed=" << seed
-           << " source vertex " << s << " (" << a << ", " << b << ")";
+      what << c.name << " n=" << c.n << " (" << m.number_of_faces() << " faces) perturbation=" << c.perturbation
+           << " seed=" << seed << " source vertex " << s << " (" << m.point(s) << ")";
+      INFO(what.str());
+      const auto rc = run(m, s, tol, what.str());
+      if(!rc) continue;
+      check_ridge_validity(m, *rc, what.str());
+      double worst = 0;
+      for(vertex_descriptor corner : poly.corner_vertices)
+      {
+        if(corner == s) continue;
+        const double d = distance_to_ridge(m.point(corner), rc->polylines) / h;
+        worst = std::max(worst, d);
+        INFO("corner " << corner << " (" << m.point(corner) << "): distance to the ridge " << d << " mean edges");
+        CHECK(d <= 1.0);
+      }
+      std::cout << "[ridge_curve] " << what.str() << ": farthest corner " << worst << " mean edges; free ends "
+                << rc->statistics.ridge.free_ends << " junctions " << rc->statistics.ridge.junctions << "\n";
+    }
+  }
+}
+
+// Genus g: one component and 2g independent cycles, from several sources.
+TEST_CASE("tori and higher genus: one component with 2g cycles", "[ridge_curve]")
+{
+#ifdef GEODESIC_RIDGE_SANITIZE
+  const std::vector<std::string> names = {"torus_1k.off", "eight.off"};
+#else
+  const std::vector<std::string> names = {"torus_1k.off", "knot_3k.off", "eight.off", "3holes_7k.off"};
+#endif
+  for(const std::string& name : names)
+  {
+    const Mesh m = load(name);
+    const std::size_t nv = m.number_of_vertices();
+    const int g = genus(m);
+    std::vector<std::size_t> sources = {0, nv / 2};
+    if(name != "3holes_7k.off") sources.push_back((3 * nv) / 4 + 1);
+    for(std::size_t s : sources)
+    {
+      std::ostringstream what;
+      what << name << " (genus " << g << ") source vertex " << s;
       INFO(what.str());
       const auto t0 = std::chrono::steady_clock::now();
-      const auto rc = run(sq.mesh, s, tolerance, what.str());
+      const auto rc = run(m, vertex_descriptor(static_cast<Mesh::size_type>(s)), Geodesic_ridge::default_tolerance,
+                          what.str());
       if(!rc) continue;
-      check_ridge_validity(sq.mesh, *rc, what.str());
-      const Square_measure r = measure_square(sq, *rc, a, b, 0.5);
-      std::cout << what.str() << ": ridge->analytic max " << r.max_error << " p95 " << r.p95_error
-                << " | analytic->ridge max " << r.max_miss << " p95 " << r.p95_miss << " covered(0.5) "
-                << r.covered << " | top pts " << r.top_points << " | segs " << rc->statistics.ridge.ridge_segments
-                << " junctions " << rc->statistics.ridge.junctions << " free ends " << rc->statistics.ridge.free_ends
-                << " regions " << rc->statistics.ridge.regions_before_merge << " merged "
-                << rc->statistics.ridge.merged_segments << " dropped " << rc->statistics.ridge.dropped_components
-                << " | " << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
-      CHECK(r.top_points == 0);
-      CHECK(r.max_error <= 0.25);
-      CHECK(r.max_miss <= 0.5);
+      check_ridge_validity(m, *rc, what.str());
+      std::cout << "[ridge_curve] " << what.str() << ": " << rc->statistics.ridge.cycles << " cycles, "
+                << rc->statistics.ridge.junctions << " junctions, "
+                << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
     }
+  }
+}
+
+// Tolerance sweep: connected, 2g cycles, and surface locations that reproduce
+// the 3D points, at every tolerance.
+TEST_CASE("tolerance sweep: connected ridge with 2g cycles", "[ridge_curve]")
+{
+#ifdef GEODESIC_RIDGE_SANITIZE
+  const std::vector<std::string> names = {"bunny_1k.off", "torus_1k.off"};
+  const std::vector<double> tolerances = {0.005, 0.05, 0.2};
+#else
+  const std::vector<std::string> names = {"bunny_1k.off", "torus_1k.off", "eight.off", "3holes_7k.off"};
+  const std::vector<double> tolerances = {0.005, 0.01, 0.025, 0.05, 0.1, 0.2};
+#endif
+  for(const std::string& name : names)
+  {
+    const Mesh m = load(name);
+    const vertex_descriptor s(static_cast<Mesh::size_type>(m.number_of_vertices() / 3));
+    for(double tol : tolerances)
+    {
+      std::ostringstream what;
+      what << name << " source vertex " << s << " tolerance " << tol;
+      INFO(what.str());
+      const auto t0 = std::chrono::steady_clock::now();
+      const auto rc = run(m, s, tol, what.str());
+      if(!rc) continue;
+      check_ridge_validity(m, *rc, what.str());
+      std::cout << "[ridge_curve] " << what.str() << ": " << rc->statistics.ridge.ridge_segments << " segments, "
+                << rc->statistics.ridge.cycles << " cycles, "
+                << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+    }
+  }
+}
+
+// Sources given as Face_locations: inside a face and on an edge. On the doubly
+// covered square the oracle applies to any top-sheet point, so the ridge is
+// also compared with the analytic cut locus (same radii as above).
+TEST_CASE("Face_location sources inside a face and on an edge", "[ridge_curve]")
+{
+  const std::vector<std::array<double, 3> > barycentrics = {{{0.2, 0.3, 0.5}}, {{0.35, 0.65, 0.0}}};
+  {
+    const Mesh m = load("torus_1k.off");
+    for(std::size_t f : {std::size_t(17), std::size_t(600)})
+      for(const auto& w : barycentrics)
+      {
+        const Face_location loc(face_descriptor(static_cast<Mesh::size_type>(f)), w);
+        std::ostringstream what;
+        what << "torus_1k.off source face " << f << " barycentric (" << w[0] << ", " << w[1] << ", " << w[2] << ")";
+        INFO(what.str());
+        const auto rc = run(m, loc, Geodesic_ridge::default_tolerance, what.str());
+        if(rc) check_ridge_validity(m, *rc, what.str());
+      }
+  }
+  {
+    const Doubly_covered_square sq = make_doubly_covered_square(12, 0.25, test_seed(20260301));
+    for(std::size_t f : {std::size_t(40), std::size_t(150)})
+      for(const auto& w : barycentrics)
+      {
+        REQUIRE(!sq.bottom_face[f]);
+        const face_descriptor fd(static_cast<Mesh::size_type>(f));
+        const auto h = sq.mesh.halfedge(fd);
+        const Point_3 p0 = sq.mesh.point(sq.mesh.source(h)), p1 = sq.mesh.point(sq.mesh.target(h)),
+                      p2 = sq.mesh.point(sq.mesh.target(sq.mesh.next(h)));
+        const double a = w[0] * p0.x() + w[1] * p1.x() + w[2] * p2.x(), b = w[0] * p0.y() + w[1] * p1.y() + w[2] * p2.y();
+        std::ostringstream what;
+        what << "doubly covered square n=12 perturbation=0.25 seed=" << sq.seed << " source face " << f
+             << " barycentric (" << w[0] << ", " << w[1] << ", " << w[2] << ") = (" << a << ", " << b << ")";
+        INFO(what.str());
+        const auto rc = run(sq.mesh, Face_location(fd, w), Geodesic_ridge::default_tolerance, what.str());
+        if(!rc) continue;
+        check_ridge_validity(sq.mesh, *rc, what.str());
+        const Square_measure r = measure_square(sq, *rc, a, b, 0.25, 0.5);
+        std::cout << "[ridge_curve] " << what.str() << ": ridge->analytic max " << r.max_error << " p95 "
+                  << r.p95_error << " | analytic->ridge max " << r.max_miss << " p95 " << r.p95_miss
+                  << " within 0.5: " << r.covered << " | top-sheet samples " << r.top_points << "\n";
+        // KNOWN FAILURE: the spurious branches of the vertex-source case above.
+        CHECK(r.max_error <= 0.25);
+        CHECK(r.max_miss <= 0.5);
+      }
   }
 }

@@ -507,6 +507,7 @@ struct Ridge_accuracy
   double ridge_length = 0;                ///< total length of the computed polylines (mean edges)
   std::size_t leaves = 0, junctions = 0;  ///< of the computed polylines
   std::vector<Ridge_outlier<Point_3> > outliers; ///< computed samples farther than outlier_distance
+  std::vector<std::pair<std::size_t, double> > missed; ///< reference points (index, distance) of the recall set farther than outlier_distance
 };
 
 namespace internal {
@@ -685,6 +686,7 @@ Ridge_accuracy<Point_3> ridge_accuracy(const Reference_ridge<Point_3>& ref,
         d = std::min(d, point_segment_distance(q, to_v3(pl[k]), to_v3(pl[k + 1])));
     }
     recall.push_back(d / L);
+    if(d / L > opt.outlier_distance) A.missed.emplace_back(i, d / L);
   }
   A.recall_points = recall.size();
   A.recall_median = quantile(recall, 0.5);
