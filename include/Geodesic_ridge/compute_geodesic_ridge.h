@@ -26,6 +26,7 @@ struct solver_t {};
 struct initial_rings_t {};
 struct extension_step_t {};
 struct maximum_rings_t {};
+struct minimum_spur_angle_t {};
 } // namespace internal_np
 
 namespace parameters {
@@ -37,11 +38,23 @@ CGAL::Named_function_parameters<Solver, internal_np::solver_t> solver(const Solv
 {
   return CGAL::Named_function_parameters<Solver, internal_np::solver_t>(s);
 }
+template <class Solver, class NamedParameters>
+CGAL::Named_function_parameters<Solver, internal_np::solver_t, NamedParameters>
+solver(const Solver& s, const NamedParameters& np)
+{
+  return CGAL::Named_function_parameters<Solver, internal_np::solver_t, NamedParameters>(s, np);
+}
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Extension rings grown everywhere before the first solve (default 3).
 inline CGAL::Named_function_parameters<int, internal_np::initial_rings_t> initial_rings(int k)
 {
   return CGAL::Named_function_parameters<int, internal_np::initial_rings_t>(k);
+}
+template <class NamedParameters>
+CGAL::Named_function_parameters<int, internal_np::initial_rings_t, NamedParameters>
+initial_rings(int k, const NamedParameters& np)
+{
+  return CGAL::Named_function_parameters<int, internal_np::initial_rings_t, NamedParameters>(k, np);
 }
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Rings grown, after a solve, around the outermost copies that still win area
@@ -50,6 +63,12 @@ inline CGAL::Named_function_parameters<int, internal_np::extension_step_t> exten
 {
   return CGAL::Named_function_parameters<int, internal_np::extension_step_t>(k);
 }
+template <class NamedParameters>
+CGAL::Named_function_parameters<int, internal_np::extension_step_t, NamedParameters>
+extension_step(int k, const NamedParameters& np)
+{
+  return CGAL::Named_function_parameters<int, internal_np::extension_step_t, NamedParameters>(k, np);
+}
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Hard cap on extension rings (default 7, so at most two solves with the
 /// default initial rings and step): rings beyond the initial ones grow only
@@ -57,6 +76,25 @@ inline CGAL::Named_function_parameters<int, internal_np::extension_step_t> exten
 inline CGAL::Named_function_parameters<int, internal_np::maximum_rings_t> maximum_rings(int k)
 {
   return CGAL::Named_function_parameters<int, internal_np::maximum_rings_t>(k);
+}
+template <class NamedParameters>
+CGAL::Named_function_parameters<int, internal_np::maximum_rings_t, NamedParameters>
+maximum_rings(int k, const NamedParameters& np)
+{
+  return CGAL::Named_function_parameters<int, internal_np::maximum_rings_t, NamedParameters>(k, np);
+}
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// Free ends of the ridge whose gradient jump is below this angle (degrees,
+/// default 15) are pruned, repeatedly; 0 keeps every branch.
+inline CGAL::Named_function_parameters<double, internal_np::minimum_spur_angle_t> minimum_spur_angle(double a)
+{
+  return CGAL::Named_function_parameters<double, internal_np::minimum_spur_angle_t>(a);
+}
+template <class NamedParameters>
+CGAL::Named_function_parameters<double, internal_np::minimum_spur_angle_t, NamedParameters>
+minimum_spur_angle(double a, const NamedParameters& np)
+{
+  return CGAL::Named_function_parameters<double, internal_np::minimum_spur_angle_t, NamedParameters>(a, np);
 }
 } // namespace parameters
 
@@ -71,6 +109,7 @@ struct Geodesic_ridge_statistics
   Rough_cut_locus_statistics rough_cut_locus;
   Extended_surface_statistics extended_surface;
   Ridge_curve_statistics ridge;
+  double time_solve_on_mesh = 0; ///< the solver on M, whose distances shape the tree of stage 1
   double time_rough_cut_locus = 0, time_extension = 0, time_solve = 0, time_envelope = 0,
          time_assembly = 0, time_total = 0;
 };
@@ -106,6 +145,7 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   typedef typename boost::property_traits<std::decay_t<decltype(vpm)> >::value_type Point;
   const auto solver = choose_parameter(get_parameter(np, internal_np::solver_t()), Exact_solver());
   const int initial_rings = choose_parameter(get_parameter(np, internal_np::initial_rings_t()), 3);
+  const double minimum_angle = choose_parameter(get_parameter(np, internal_np::minimum_spur_angle_t()), 15.0);
   const int extension_step = choose_parameter(get_parameter(np, internal_np::extension_step_t()), 4);
   const int maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), 7);
   if(initial_rings < 0 || maximum_rings < initial_rings || extension_step < 1)
@@ -116,9 +156,18 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   Geodesic_ridge_statistics& st = result.statistics;
   st.solver = solver.name();
 
-  // Stage 1
+  // Stage 1, on the tree of the solver's distances on M (one solve, the floor
+  // of the exact pipeline anyway): see rough_cut_locus_impl
   auto t0 = std::chrono::steady_clock::now();
-  result.rough_cut_locus = rough_cut_locus_impl(tm, src, np);
+  std::vector<double> field(num_vertices(tm));
+  {
+    auto field_map = boost::make_iterator_property_map(field.begin(), vim);
+    if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX) solver(tm, src.vertex, field_map);
+    else solver(tm, src.location, field_map);
+  }
+  st.time_solve_on_mesh = seconds_since(t0);
+  t0 = std::chrono::steady_clock::now();
+  result.rough_cut_locus = rough_cut_locus_impl(tm, src, np, &field);
   const Rough_cut_locus<TriangleMesh>& rcl = result.rough_cut_locus;
   st.tolerance = rcl.tolerance;
   st.rough_cut_locus = rcl.statistics;
@@ -220,7 +269,7 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 
   // Stage 2c + 3: exact envelopes and the ridge curve
   t0 = std::chrono::steady_clock::now();
-  assemble_ridge_curve(tm, E, face_copies, same_front_tolerance, vpm, vim, fim, eim, result.polylines,
+  assemble_ridge_curve(tm, E, face_copies, same_front_tolerance, minimum_angle, vpm, vim, fim, eim, result.polylines,
                        result.regions, st.ridge);
   st.time_assembly = seconds_since(t0);
   st.ridge.time = st.time_assembly;

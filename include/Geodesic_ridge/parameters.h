@@ -2,8 +2,10 @@
 //
 // Named parameters of the package. CGAL's list of named parameters is closed
 // to outside packages, so our own knobs are tag types of our own; CGAL's
-// members (vertex_point_map, face_index_map, ...) still chain after them:
+// members (vertex_point_map, face_index_map, ...) still chain after them, and
+// our own ones take the parameters to extend as a last argument:
 //   Geodesic_ridge::parameters::tolerance(0.01).vertex_point_map(vpm)
+//   Geodesic_ridge::parameters::maximum_rings(12, parameters::tolerance(0.01))
 #ifndef GEODESIC_RIDGE_PARAMETERS_H
 #define GEODESIC_RIDGE_PARAMETERS_H
 
@@ -33,6 +35,14 @@ inline CGAL::Named_function_parameters<double, internal_np::tolerance_t>
 tolerance(double t)
 {
   return CGAL::Named_function_parameters<double, internal_np::tolerance_t>(t);
+}
+
+/// Same, added to the named parameters `np`.
+template <class NamedParameters>
+CGAL::Named_function_parameters<double, internal_np::tolerance_t, NamedParameters>
+tolerance(double t, const NamedParameters& np)
+{
+  return CGAL::Named_function_parameters<double, internal_np::tolerance_t, NamedParameters>(t, np);
 }
 
 } // namespace parameters

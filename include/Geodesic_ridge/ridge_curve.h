@@ -60,7 +60,9 @@ struct Ridge_curve_statistics
   std::size_t edge_segments = 0;          ///< along mesh edges, between different fronts
   std::size_t regions_before_merge = 0;   ///< components of M minus the raw ridge
   std::size_t merged_segments = 0;        ///< segments removed to merge regions
+  std::size_t rejoined_segments = 0;      ///< merged segments put back to join two pieces of the ridge
   std::size_t dropped_components = 0;     ///< detached pieces dropped
+  std::size_t pruned_spur_segments = 0;   ///< free-end segments with a gradient jump below the minimum angle
   std::size_t ridge_segments = 0, junctions = 0, free_ends = 0, components = 0, cycles = 0;
   double total_length = 0;
   double time = 0;
@@ -108,6 +110,7 @@ template <class TriangleMesh, class Point, class VertexPointMap, class VertexInd
           class FaceIndexMap, class EdgeIndexMap>
 void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>& E,
                           const std::vector<Face_copies>& face_copies, double same_front_tolerance,
+                          double minimum_angle,
                           VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim,
                           std::vector<std::vector<Ridge_point<Point> > >& polylines,
                           std::vector<std::vector<Ridge_region_cell> >& regions,
@@ -213,7 +216,11 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
     return add_node(Key(2, f, lambda[1], lambda[2]), f, lambda);
   };
 
-  struct Segment { std::size_t a, b, left, right; double strength; bool ridge; };
+  struct Segment { std::size_t a, b, left, right; double strength; double angle; bool ridge; };
+  auto angle_between = [](double ax, double ay, double bx, double by) { // degrees, 2D vectors
+    const double c = ax * bx + ay * by, s2 = ax * by - ay * bx;
+    return std::atan2(std::abs(s2), c) * 180.0 / 3.14159265358979323846;
+  };
   std::vector<Segment> segments;
   Union_find fronts(cells.size());
 
@@ -228,7 +235,11 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       const auto ga = field_gradient(cp, cells[ca].field), gb = field_gradient(cp, cells[cb].field);
       const double strength = std::sqrt((ga[0] - gb[0]) * (ga[0] - gb[0]) + (ga[1] - gb[1]) * (ga[1] - gb[1]) +
                                         (ga[2] - gb[2]) * (ga[2] - gb[2]));
-      segments.push_back(Segment{node_at(f, s.endpoints[0]), node_at(f, s.endpoints[1]), ca, cb, strength, true});
+      const double na = std::sqrt(ga[0] * ga[0] + ga[1] * ga[1] + ga[2] * ga[2]);
+      const double nb = std::sqrt(gb[0] * gb[0] + gb[1] * gb[1] + gb[2] * gb[2]);
+      const double cosine = (na > 0 && nb > 0) ? (ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2]) / (na * nb) : 1.0;
+      const double angle = std::acos(std::max(-1.0, std::min(1.0, cosine))) * 180.0 / 3.14159265358979323846;
+      segments.push_back(Segment{node_at(f, s.endpoints[0]), node_at(f, s.endpoints[1]), ca, cb, strength, angle, true});
       ++st.envelope_segments;
     }
   }
@@ -322,7 +333,9 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
         std::array<Q, 3> la = {{Q(0), Q(0), Q(0)}}, lb = la;
         la[k1] = Q(1) - cuts[i]; la[(k1 + 1) % 3] = cuts[i];
         lb[k1] = Q(1) - cuts[i + 1]; lb[(k1 + 1) % 3] = cuts[i + 1];
-        segments.push_back(Segment{node_at(f1, la), node_at(f1, lb), c1, c2, std::sqrt(jt * jt + jn * jn), true});
+        // unfolded into f1's plane, g2 is (g2.t, -g2.m2) in the frame (t, m1)
+        const double angle = angle_between(dot(g1, t), dot(g1, m1.data()), dot(g2, t), -dot(g2, m2.data()));
+        segments.push_back(Segment{node_at(f1, la), node_at(f1, lb), c1, c2, std::sqrt(jt * jt + jn * jn), angle, true});
         ++st.edge_segments;
       }
     }
@@ -344,6 +357,64 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       segments[i].ridge = false;
       ++st.merged_segments;
     }
+
+  // ---- a merge may have cut a branch off the tree: re-add, strongest first,
+  //      merged segments that join two pieces of the ridge. Joining two pieces
+  //      closes no cycle, so no region is split again.
+  {
+    Union_find pieces(nodes.size());
+    for(const Segment& sg : segments) if(sg.ridge) pieces.unite(sg.a, sg.b);
+    std::vector<std::size_t> merged;
+    for(std::size_t i = 0; i < segments.size(); ++i)
+      if(!segments[i].ridge && segments[i].a != segments[i].b) merged.push_back(i);
+    std::stable_sort(merged.begin(), merged.end(),
+                     [&](std::size_t a, std::size_t b) { return segments[a].strength > segments[b].strength; });
+    for(std::size_t i : merged)
+    {
+      const std::size_t ra = pieces.find(segments[i].a), rb = pieces.find(segments[i].b);
+      // only segments that touch the ridge on both sides reconnect something
+      if(ra == rb) continue;
+      bool a_on = false, b_on = false;
+      for(const Segment& sg : segments)
+        if(sg.ridge) { a_on |= (sg.a == segments[i].a || sg.b == segments[i].a); b_on |= (sg.a == segments[i].b || sg.b == segments[i].b); }
+      if(!a_on || !b_on) continue;
+      segments[i].ridge = true;
+      pieces.unite(ra, rb);
+      ++st.rejoined_segments;
+    }
+  }
+
+  // ---- prune weak spurs: a free end whose segment's gradient jump is below
+  //      `minimum_angle` is no ridge one can locate (two fronts meeting at a
+  //      small angle, or two copies each inexact at a corner) and is removed,
+  //      repeatedly. Cycles and segments between junctions are never touched.
+  if(minimum_angle > 0)
+  {
+    std::vector<std::vector<std::size_t> > at(nodes.size());
+    std::vector<std::size_t> live(nodes.size(), 0);
+    for(std::size_t i = 0; i < segments.size(); ++i)
+      if(segments[i].ridge && segments[i].a != segments[i].b)
+      {
+        at[segments[i].a].push_back(i); at[segments[i].b].push_back(i);
+        ++live[segments[i].a]; ++live[segments[i].b];
+      }
+    std::vector<std::size_t> leaves;
+    for(std::size_t v = 0; v < nodes.size(); ++v) if(live[v] == 1) leaves.push_back(v);
+    while(!leaves.empty())
+    {
+      const std::size_t v = leaves.back();
+      leaves.pop_back();
+      if(live[v] != 1) continue;
+      std::size_t seg = std::size_t(-1);
+      for(std::size_t i : at[v]) if(segments[i].ridge) { seg = i; break; }
+      if(seg == std::size_t(-1) || segments[seg].angle >= minimum_angle) continue;
+      segments[seg].ridge = false;
+      ++st.pruned_spur_segments;
+      --live[v];
+      const std::size_t w = segments[seg].a == v ? segments[seg].b : segments[seg].a;
+      if(--live[w] == 1) leaves.push_back(w);
+    }
+  }
 
   // ---- keep the main component (largest length); drop degenerate segments
   auto length = [&](const Segment& s) {

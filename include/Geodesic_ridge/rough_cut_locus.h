@@ -111,10 +111,12 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// `field`, if given, holds a geodesic distance per vertex (by vertex index):
+// the tree then follows it (see below) instead of Dijkstra's edge distances.
 template <class TriangleMesh, class NamedParameters>
 Rough_cut_locus<TriangleMesh>
 rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
-                     const NamedParameters& np)
+                     const NamedParameters& np, const std::vector<double>* field = nullptr)
 {
   typedef boost::graph_traits<TriangleMesh>  GT;
   typedef typename GT::vertex_descriptor    vertex_descriptor;
@@ -204,6 +206,55 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     if(!(r.distance[vi(v)] < inf))
       throw Invalid_mesh_error("vertex " + std::to_string(vi(v)) +
                                " cannot be reached from the source");
+
+  // With a geodesic field, every vertex hangs from the neighbour u of smaller
+  // field value that minimizes field(u) + |uv|: the tree descends the true
+  // distance instead of Dijkstra's staircase paths, whose anisotropy on regular
+  // meshes makes significant dual branches far from the real ridge. Strictly
+  // decreasing values make it a tree; where a vertex has no lower neighbour it
+  // keeps its Dijkstra parent, and if that mix ever closed a cycle, the whole
+  // Dijkstra tree is kept.
+  if(field != nullptr)
+  {
+    std::vector<vertex_descriptor> dijkstra_parent = r.parent;
+    std::vector<char> is_root(nv, 0);
+    for(const auto& sd : src.seeds) is_root[vi(sd.first)] = 1;
+    for(vertex_descriptor v : vertices(tm))
+    {
+      if(is_root[vi(v)]) continue;
+      if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX && r.parent[vi(v)] == src.vertex &&
+         v != src.vertex)
+        continue; // the source's neighbours stay its children
+      double best = inf;
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
+      {
+        const vertex_descriptor u = source(h, tm);
+        if(!((*field)[vi(u)] < (*field)[vi(v)])) continue;
+        const double value = (*field)[vi(u)] + length[ei(edge(h, tm))];
+        if(value < best) { best = value; r.parent[vi(v)] = u; }
+      }
+    }
+    // a tree iff every vertex reaches a root
+    std::vector<char> state(nv, 0); // 0 unknown, 1 in progress, 2 reaches a root
+    bool tree = true;
+    for(vertex_descriptor v : vertices(tm))
+    {
+      std::vector<std::size_t> path;
+      std::size_t x = vi(v);
+      while(state[x] == 0 && !is_root[x])
+      {
+        state[x] = 1;
+        path.push_back(x);
+        x = vi(r.parent[x]);
+      }
+      if(state[x] == 1) { tree = false; break; }
+      for(std::size_t y : path) state[y] = 2;
+      state[x] = 2;
+    }
+    if(!tree) r.parent = dijkstra_parent;
+    else
+      for(vertex_descriptor v : vertices(tm)) r.distance[vi(v)] = (*field)[vi(v)];
+  }
   st.time_shortest_path_tree = seconds_since(t0);
 
   // ---------------------------------------------------------------------------
