@@ -9,6 +9,8 @@
 // repository's data/), smallest first, from vertex 0. Prints a Markdown table.
 // Peak memory is the process's maximum resident set size after that mesh
 // (meshes run in increasing size, so it is that mesh's peak or an earlier one's).
+#include "benchmark_meshes.h"
+
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 
@@ -42,15 +44,7 @@ int main(int argc, char** argv)
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
     else files.push_back(a);
   }
-  if(files.empty())
-  {
-    fs::path dir = GEODESIC_RIDGE_SHARED_DATA_DIR;
-    if(!fs::is_directory(dir)) dir = GEODESIC_RIDGE_DATA_DIR;
-    for(const auto& entry : fs::directory_iterator(dir))
-      if(entry.path().extension() == ".off") files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end(),
-            [](const std::string& a, const std::string& b) { return fs::file_size(a) < fs::file_size(b); });
+  files = benchmark_meshes(files);
 
   std::cout << "| mesh | F | genus | F(E)/F | rings | solves | stage 1 (s) | extension (s) | solves (s) "
                "| envelope+dominance (s) | assembly (s) | total (s) | one SMSP on M (s) | total / SMSP | peak RSS (MB) "

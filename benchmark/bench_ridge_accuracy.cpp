@@ -17,6 +17,8 @@
 // with --outliers, also where the computed samples > 0.5 mean edge off lie.
 #include "../test/support/reference_ridge.h"
 
+#include "benchmark_meshes.h"
+
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 
@@ -56,16 +58,7 @@ int main(int argc, char** argv)
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
     else files.push_back(a);
   }
-  if(files.empty())
-  {
-    fs::path dir = GEODESIC_RIDGE_SHARED_DATA_DIR;
-    if(!fs::is_directory(dir)) dir = GEODESIC_RIDGE_DATA_DIR;
-    for(const auto& entry : fs::directory_iterator(dir))
-      if(entry.path().extension() == ".off") files.push_back(entry.path().string());
-    std::sort(files.begin(), files.end(), [](const std::string& a, const std::string& b) {
-      return fs::file_size(a) < fs::file_size(b);
-    });
-  }
+  files = benchmark_meshes(files);
 
   std::cout << "Distances in mean edge lengths. Precision: computed ridge samples -> reference ridge, "
                "split by the jump of the nearest reference point (>= 30 deg | < 30 deg); recall: reference "

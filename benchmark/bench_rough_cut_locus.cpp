@@ -9,6 +9,8 @@
 // repository's data/ when ../shared is absent), sorted by size. Times are the
 // median of R runs (default 3) of stage 1 from vertex 0 at the default
 // tolerance; the exact solve is run once (it dominates). Prints a Markdown table.
+#include "benchmark_meshes.h"
+
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/rough_cut_locus.h>
 
@@ -52,16 +54,7 @@ int main(int argc, char** argv)
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
     else files.push_back(a);
   }
-  if(files.empty())
-  {
-    fs::path dir = GEODESIC_RIDGE_SHARED_DATA_DIR;
-    if(!fs::is_directory(dir)) dir = GEODESIC_RIDGE_DATA_DIR;
-    for(const auto& entry : fs::directory_iterator(dir))
-      if(entry.path().extension() == ".off") files.push_back(entry.path().string());
-    std::sort(files.begin(), files.end(), [](const std::string& a, const std::string& b) {
-      return fs::file_size(a) < fs::file_size(b);
-    });
-  }
+  files = benchmark_meshes(files);
 
   std::cout << "| mesh | V | F | genus | Dijkstra (s) | significance (s) | cut graph (s) | disk check (s) "
                "| stage 1 total (s) | kept dual | K edges | K leaves | exact SMSP solve (s) | stage 1 / SMSP |\n"

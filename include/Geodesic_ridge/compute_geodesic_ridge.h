@@ -302,8 +302,7 @@ auto compute_ridge_curve(const TriangleMesh& tm,
 {
   internal::get_tolerance(np);
   validate_triangle_mesh(tm, np);
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  return internal::ridge_curve_impl(tm, make_vertex_source(tm, source, vim), np);
+  return internal::ridge_curve_impl(tm, make_source(tm, source, np), np);
 }
 
 template <class TriangleMesh, class FT, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -312,15 +311,9 @@ auto compute_ridge_curve(const TriangleMesh& tm,
                                          std::array<FT, 3> >& source,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   internal::get_tolerance(np);
   validate_triangle_mesh(tm, np);
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  return internal::ridge_curve_impl(tm, make_face_source(tm, source, vpm, fim, vim), np);
+  return internal::ridge_curve_impl(tm, make_source(tm, source, np), np);
 }
 
 /// \ingroup PkgGeodesicRidgeRef

@@ -370,11 +370,11 @@ private:
 
   void close_if_complete(std::uint32_t x0)
   {
-    std::vector<std::uint32_t> todo{x0};
-    while(!todo.empty())
+    std::vector<std::uint32_t> pending{x0};
+    while(!pending.empty())
     {
-      const std::uint32_t x = find(todo.back());
-      todo.pop_back();
+      const std::uint32_t x = find(pending.back());
+      pending.pop_back();
       const Fan fx = fans_[x];
       if(fx.closed || fx.leaf || fx.size != degree_[fx.vertex]) continue;
       // The end faces L (last) and F (first) hold the two copies of one edge (v, z).
@@ -419,7 +419,7 @@ private:
       fans_[zF].last = b.last;
       fans_[zF].size = a.size + b.size;
       fans_[zF].leaf = a.leaf || b.leaf;
-      todo.push_back(zF);
+      pending.push_back(zF);
     }
   }
 

@@ -578,8 +578,7 @@ compute_rough_cut_locus(const TriangleMesh& tm,
 {
   internal::get_tolerance(np); // a bad parameter is reported before any work
   validate_triangle_mesh(tm, np);
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  return internal::rough_cut_locus_impl(tm, make_vertex_source(tm, source, vim), np);
+  return internal::rough_cut_locus_impl(tm, make_source(tm, source, np), np);
 }
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -594,15 +593,9 @@ compute_rough_cut_locus(const TriangleMesh& tm,
                                         std::array<FT, 3> >& source,
                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   internal::get_tolerance(np);
   validate_triangle_mesh(tm, np);
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  return internal::rough_cut_locus_impl(tm, make_face_source(tm, source, vpm, fim, vim), np);
+  return internal::rough_cut_locus_impl(tm, make_source(tm, source, np), np);
 }
 
 /// \ingroup PkgGeodesicRidgeRef

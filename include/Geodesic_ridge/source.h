@@ -10,6 +10,7 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <array>
 #include <cmath>
@@ -173,6 +174,32 @@ make_face_source(const TriangleMesh& tm,
   s.faces.push_back(face(ho, tm));
   s.seeds.emplace_back(target(next(ho, tm), tm), dist_to(target(next(ho, tm), tm)));
   return s;
+}
+
+/// \ingroup PkgGeodesicRidgeRef
+/// Makes a source from a vertex or a `Face_location`, reading the maps it needs
+/// from the named parameters (CGAL's `vertex_point_map`, `vertex_index_map`,
+/// `face_index_map`): what every entry point of the package calls.
+template <class TriangleMesh, class NamedParameters>
+Geodesic_source<TriangleMesh>
+make_source(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor v,
+            const NamedParameters& np)
+{
+  return make_vertex_source(tm, v, CGAL::get_initialized_vertex_index_map(tm, np));
+}
+
+template <class TriangleMesh, class FT, class NamedParameters>
+Geodesic_source<TriangleMesh>
+make_source(const TriangleMesh& tm,
+            const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor, std::array<FT, 3> >& loc,
+            const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  return make_face_source(tm, loc, vpm, CGAL::get_initialized_face_index_map(tm, np),
+                          CGAL::get_initialized_vertex_index_map(tm, np));
 }
 
 } // namespace Geodesic_ridge
