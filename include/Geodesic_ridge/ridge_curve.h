@@ -369,15 +369,13 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       if(!segments[i].ridge && segments[i].a != segments[i].b) merged.push_back(i);
     std::stable_sort(merged.begin(), merged.end(),
                      [&](std::size_t a, std::size_t b) { return segments[a].strength > segments[b].strength; });
+    std::vector<char> on_ridge(nodes.size(), 0);
+    for(const Segment& sg : segments) if(sg.ridge) on_ridge[sg.a] = on_ridge[sg.b] = 1;
     for(std::size_t i : merged)
     {
       const std::size_t ra = pieces.find(segments[i].a), rb = pieces.find(segments[i].b);
-      // only segments that touch the ridge on both sides reconnect something
-      if(ra == rb) continue;
-      bool a_on = false, b_on = false;
-      for(const Segment& sg : segments)
-        if(sg.ridge) { a_on |= (sg.a == segments[i].a || sg.b == segments[i].a); b_on |= (sg.a == segments[i].b || sg.b == segments[i].b); }
-      if(!a_on || !b_on) continue;
+      // only segments that touch the ridge at both ends reconnect something
+      if(ra == rb || !on_ridge[segments[i].a] || !on_ridge[segments[i].b]) continue;
       segments[i].ridge = true;
       pieces.unite(ra, rb);
       ++st.rejoined_segments;
