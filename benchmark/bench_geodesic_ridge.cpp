@@ -36,9 +36,11 @@ int main(int argc, char** argv)
   std::size_t max_faces = 20000;
   double tolerance = Geodesic_ridge::default_tolerance;
   std::vector<std::string> files;
+  Pipeline_options options;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
+    if(options.parse(argc, argv, i)) continue;
     if(a == "--max-faces" && i + 1 < argc) max_faces = std::stoul(argv[++i]);
     else if(a == "--tolerance" && i + 1 < argc) tolerance = std::stod(argv[++i]);
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
@@ -65,7 +67,7 @@ int main(int argc, char** argv)
 
     try
     {
-      const auto rc = Geodesic_ridge::compute_ridge_curve(mesh, source, Geodesic_ridge::parameters::tolerance(tolerance));
+      const auto rc = Geodesic_ridge::compute_ridge_curve(mesh, source, options.parameters(tolerance));
       const auto& s = rc.statistics;
       rusage usage;
       getrusage(RUSAGE_SELF, &usage);

@@ -46,9 +46,11 @@ int main(int argc, char** argv)
   bool outliers = false;
   GT::Reference_ridge_options ref_opt;
   std::vector<std::string> files;
+  Pipeline_options options;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
+    if(options.parse(argc, argv, i)) continue;
     if(a == "--max-faces" && i + 1 < argc) max_faces = std::stoul(argv[++i]);
     else if(a == "--tolerance" && i + 1 < argc) tolerance = std::stod(argv[++i]);
     else if(a == "--recall-tolerance" && i + 1 < argc) recall_tolerance = std::stod(argv[++i]);
@@ -87,11 +89,11 @@ int main(int argc, char** argv)
       try
       {
         const auto t0 = std::chrono::steady_clock::now();
-        const auto rc = Geodesic_ridge::compute_ridge_curve(mesh, s, Geodesic_ridge::parameters::tolerance(tolerance));
+        const auto rc = Geodesic_ridge::compute_ridge_curve(mesh, s, options.parameters(tolerance));
         t_ridge = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         acc = GT::ridge_accuracy(ref, rc.polylines, ref_opt);
         const auto rc_small =
-            Geodesic_ridge::compute_ridge_curve(mesh, s, Geodesic_ridge::parameters::tolerance(recall_tolerance));
+            Geodesic_ridge::compute_ridge_curve(mesh, s, options.parameters(recall_tolerance));
         acc_small = GT::ridge_accuracy(ref, rc_small.polylines, ref_opt);
       }
       catch(const std::exception& e) { failure = e.what(); }

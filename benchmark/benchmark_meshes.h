@@ -6,6 +6,8 @@
 #ifndef GEODESIC_RIDGE_BENCHMARK_MESHES_H
 #define GEODESIC_RIDGE_BENCHMARK_MESHES_H
 
+#include <Geodesic_ridge/compute_geodesic_ridge.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <string>
@@ -25,5 +27,40 @@ inline std::vector<std::string> benchmark_meshes(std::vector<std::string> files)
             [](const std::string& a, const std::string& b) { return fs::file_size(a) < fs::file_size(b); });
   return files;
 }
+
+/// The pipeline's knobs, settable from a benchmark's command line, so that
+/// schedules can be compared on the same meshes:
+///   --initial-rings K --extension-step K --maximum-rings K --maximum-solves K
+///   --guided 0|1 --leaf-extension F --spur-angle DEG
+struct Pipeline_options
+{
+  int initial_rings = 3, extension_step = 4, maximum_rings = 7, maximum_solves = 2;
+  bool guided = false;
+  double leaf_extension = Geodesic_ridge::default_leaf_extension, spur_angle = 15;
+
+  /// consumes argv[i] (and its value) if it is one of the options above
+  bool parse(int argc, char** argv, int& i)
+  {
+    const std::string a = argv[i];
+    if(i + 1 >= argc) return false;
+    if(a == "--initial-rings") initial_rings = std::stoi(argv[++i]);
+    else if(a == "--extension-step") extension_step = std::stoi(argv[++i]);
+    else if(a == "--maximum-rings") maximum_rings = std::stoi(argv[++i]);
+    else if(a == "--maximum-solves") maximum_solves = std::stoi(argv[++i]);
+    else if(a == "--guided") guided = std::stoi(argv[++i]) != 0;
+    else if(a == "--leaf-extension") leaf_extension = std::stod(argv[++i]);
+    else if(a == "--spur-angle") spur_angle = std::stod(argv[++i]);
+    else return false;
+    return true;
+  }
+
+  auto parameters(double tolerance) const
+  {
+    namespace p = Geodesic_ridge::parameters;
+    return p::tolerance(tolerance, p::initial_rings(initial_rings, p::extension_step(extension_step,
+           p::maximum_rings(maximum_rings, p::maximum_solves(maximum_solves, p::guided_extension(guided,
+           p::leaf_extension(leaf_extension, p::minimum_spur_angle(spur_angle))))))));
+  }
+};
 
 #endif

@@ -264,6 +264,8 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
      << "    \"edge_segments\": " << q.edge_segments << ",\n"
      << "    \"regions_before_merge\": " << q.regions_before_merge << ",\n"
      << "    \"merged_segments\": " << q.merged_segments << ",\n"
+     << "    \"pruned_spur_segments\": " << q.pruned_spur_segments << ",\n"
+     << "    \"pruned_flat_end_segments\": " << q.pruned_flat_end_segments << ",\n"
      << "    \"dropped_components\": " << q.dropped_components << "\n"
      << "  },\n"
      << "  \"timings_seconds\": {\n"

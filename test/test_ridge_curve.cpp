@@ -533,3 +533,102 @@ TEST_CASE("Face_location sources inside a face and on an edge", "[ridge_curve][!
       }
   }
 }
+
+// A ridge that runs exactly along mesh edges: the doubly covered square's grid
+// has its cells split along x + y = 1 in the top-left quadrant, and a source on
+// that line puts one Voronoi edge of the mirror images (-a, b) and (a, 2 - b)
+// on those edges. Both fronts agree on every such edge (it is the ridge), so
+// only their gradients tell them apart; an earlier version compared values
+// along the edge and lost the whole branch (10.8 mean edges off).
+TEST_CASE("a ridge along mesh edges is found", "[ridge_curve]")
+{
+  const int n = 16;
+  const Doubly_covered_square sq = make_doubly_covered_square(n, 0, 0);
+  const vertex_descriptor s = sq.top[5 + (n + 1) * 11]; // (0.3125, 0.6875): a + b = 1
+  const double a = sq.mesh.point(s).x(), b = sq.mesh.point(s).y();
+  REQUIRE(a + b == 1.0);
+  const auto rc = run(sq.mesh, s, Geodesic_ridge::default_tolerance, "square n=16, source on x + y = 1");
+  REQUIRE(rc);
+  check_ridge_validity(sq.mesh, *rc, "square n=16, source on x + y = 1");
+  const double h = mean_edge_length(sq.mesh);
+  // the analytic branches on x + y = 1, from the Voronoi junctions towards the
+  // corners (0, 1) and (1, 0), but for their last 4 mean edges (the tolerance
+  // prunes K there)
+  const Doubly_covered_square_oracle oracle(a, b);
+  double worst = 0;
+  std::size_t samples = 0;
+  for(const auto& e : oracle.edges)
+  {
+    if(std::abs(e.a[0] + e.a[1] - 1) > 1e-9 || std::abs(e.b[0] + e.b[1] - 1) > 1e-9) continue;
+    const int k = static_cast<int>(std::ceil(e.length() / (0.1 * h)));
+    for(int j = 0; j <= k; ++j)
+    {
+      const double t = double(j) / k;
+      const Point_3 p(e.a[0] + t * (e.b[0] - e.a[0]), e.a[1] + t * (e.b[1] - e.a[1]), 0);
+      if(std::hypot(p.x(), 1 - p.y()) < 4 * h || std::hypot(1 - p.x(), p.y()) < 4 * h) continue;
+      worst = std::max(worst, distance_to_ridge(p, rc->polylines) / h);
+      ++samples;
+    }
+  }
+  INFO("samples " << samples << ", farthest from the ridge " << worst << " mean edges");
+  std::cout << "[ridge_curve] ridge along mesh edges: " << samples << " samples of x + y = 1, farthest "
+            << worst << " mean edges from the ridge\n";
+  REQUIRE(samples > 50);
+  CHECK(worst <= 0.5);
+}
+
+// The optional schedules: growth guided by the exact distance on M and leaf
+// extension of K keep every guarantee (valid E, no refused gluing, connected
+// ridge with 2g cycles); bad values are typed errors.
+TEST_CASE("guided extension and leaf extension keep the ridge's guarantees", "[ridge_curve]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  for(const std::string name : {"bunny_1k.off", "torus_1k.off", "eight.off"})
+  {
+    const Mesh m = load(name);
+    for(double tol : {0.01, Geodesic_ridge::default_tolerance})
+      for(int variant = 0; variant < 3; ++variant)
+      {
+        const vertex_descriptor s(static_cast<Mesh::size_type>(m.number_of_vertices() / 2));
+        std::ostringstream what;
+        what << name << " source " << s << " tolerance " << tol << " variant " << variant
+             << " (0 guided, 1 leaf extension 0.1, 2 both)";
+        INFO(what.str());
+        const bool guided = variant != 1;
+        const double leaf = variant >= 1 ? 0.1 : 1.0;
+        std::optional<Result> rc;
+        try
+        {
+          rc = Geodesic_ridge::compute_ridge_curve(
+              m, s, p::tolerance(tol, p::guided_extension(guided, p::leaf_extension(leaf, p::maximum_rings(guided ? 24 : 7)))));
+        }
+        catch(const Geodesic_ridge::Algorithm_error& e)
+        {
+          FAIL_CHECK(what.str() << ": Algorithm_error: " << e.what());
+        }
+        if(!rc) continue;
+        check_ridge_validity(m, *rc, what.str());
+        const auto& es = rc->statistics.extended_surface;
+        // KNOWN (reported in the issue): with these schedules some fans would
+        // exceed their star (0-9 refused faces and gluings on these meshes,
+        // printed below); they are refused and counted, and E stays valid
+        // (materialize checks it). The default schedule has none here.
+        if(variant == 0 && tol == Geodesic_ridge::default_tolerance && name == "torus_1k.off")
+          CHECK(es.refused_gluings + es.refused_faces <= 10);
+        CHECK(es.rings <= 24);
+        if(guided) CHECK(es.guided_faces > 0);
+        if(leaf < 1) CHECK(rc->rough_cut_locus.statistics.number_of_leaf_extension_edges ==
+                           rc->rough_cut_locus.leaf_extension_edges.size());
+        std::cout << "[ridge_curve] " << what.str() << ": E/F " << double(es.number_of_faces) / m.number_of_faces()
+                  << ", rings " << es.rings << ", guided faces " << es.guided_faces << ", refused "
+                  << es.refused_gluings << " gluings + " << es.refused_faces << " faces, solves "
+                  << rc->statistics.solves << "\n";
+      }
+  }
+  const Mesh m = load("torus_1k.off");
+  REQUIRE_THROWS_AS(Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0), p::maximum_solves(0)),
+                    Geodesic_ridge::Invalid_parameter_error);
+  for(double bad : {-0.1, 1.5, std::nan("")})
+    REQUIRE_THROWS_AS(Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0), p::leaf_extension(bad)),
+                      Geodesic_ridge::Invalid_parameter_error);
+}

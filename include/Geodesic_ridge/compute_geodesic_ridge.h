@@ -27,6 +27,8 @@ struct initial_rings_t {};
 struct extension_step_t {};
 struct maximum_rings_t {};
 struct minimum_spur_angle_t {};
+struct maximum_solves_t {};
+struct guided_extension_t {};
 } // namespace internal_np
 
 namespace parameters {
@@ -82,6 +84,34 @@ CGAL::Named_function_parameters<int, internal_np::maximum_rings_t, NamedParamete
 maximum_rings(int k, const NamedParameters& np)
 {
   return CGAL::Named_function_parameters<int, internal_np::maximum_rings_t, NamedParameters>(k, np);
+}
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// Solves on the extended surface at most (default 2): after a solve, E grows
+/// again only where copies on its border are still exact and win area.
+inline CGAL::Named_function_parameters<int, internal_np::maximum_solves_t> maximum_solves(int k)
+{
+  return CGAL::Named_function_parameters<int, internal_np::maximum_solves_t>(k);
+}
+template <class NamedParameters>
+CGAL::Named_function_parameters<int, internal_np::maximum_solves_t, NamedParameters>
+maximum_solves(int k, const NamedParameters& np)
+{
+  return CGAL::Named_function_parameters<int, internal_np::maximum_solves_t, NamedParameters>(k, np);
+}
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// With `true`, E also grows wherever a front continued across the cut is
+/// predicted (by unfolding, against the distance on M) to be still exact at a
+/// vertex whose shortest path crosses the cut: the whole shadow of a false
+/// branch of K, up to `maximum_rings`.
+inline CGAL::Named_function_parameters<bool, internal_np::guided_extension_t> guided_extension(bool b)
+{
+  return CGAL::Named_function_parameters<bool, internal_np::guided_extension_t>(b);
+}
+template <class NamedParameters>
+CGAL::Named_function_parameters<bool, internal_np::guided_extension_t, NamedParameters>
+guided_extension(bool b, const NamedParameters& np)
+{
+  return CGAL::Named_function_parameters<bool, internal_np::guided_extension_t, NamedParameters>(b, np);
 }
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Free ends of the ridge whose gradient jump is below this angle (degrees,
@@ -148,9 +178,12 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   const double minimum_angle = choose_parameter(get_parameter(np, internal_np::minimum_spur_angle_t()), 15.0);
   const int extension_step = choose_parameter(get_parameter(np, internal_np::extension_step_t()), 4);
   const int maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), 7);
+  const int maximum_solves = choose_parameter(get_parameter(np, internal_np::maximum_solves_t()), 2);
+  const bool guided = choose_parameter(get_parameter(np, internal_np::guided_extension_t()), false);
   if(initial_rings < 0 || maximum_rings < initial_rings || extension_step < 1)
     throw Invalid_parameter_error(
         "extension rings: need 0 <= initial_rings <= maximum_rings and extension_step >= 1");
+  if(maximum_solves < 1) throw Invalid_parameter_error("maximum_solves must be at least 1");
 
   Ridge_curve<TriangleMesh, Point> result;
   Geodesic_ridge_statistics& st = result.statistics;
@@ -178,13 +211,21 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   for(auto e : edges(tm)) mean_edge += distance_between(vpm, source(e, tm), target(e, tm));
   mean_edge /= static_cast<double>(num_edges(tm));
   const double same_front_tolerance = 1e-6 * mean_edge;
+  // a predicted or solved distance within this of the exact one counts as exact
+  const double exact_slack = 0.05 * mean_edge;
+  std::vector<char> on_cut(num_vertices(tm), 0);
+  for(auto e : rcl.cut_edges) on_cut[get(vim, source(e, tm))] = on_cut[get(vim, target(e, tm))] = 1;
 
-  // Stage 2: extend, solve, and extend again where the outermost copies still win.
+  // Stage 2: extend (rings everywhere, then wherever a front is still exact
+  // beyond the cut), solve; extend again only where copies on the border of
+  // E are still exact and win, and solve again.
   t0 = std::chrono::steady_clock::now();
   Extended_surface_builder<TriangleMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(vim)>,
                            std::decay_t<decltype(fim)>, std::decay_t<decltype(eim)> >
       builder(tm, rcl, vpm, vim, fim, eim);
+  builder.set_exact_distance(&field, exact_slack);
   for(int r = 0; r < initial_rings; ++r) builder.grow_ring();
+  if(guided) builder.grow_guided(maximum_rings);
   st.time_extension += seconds_since(t0);
 
   Extended_surface<Point> E;
@@ -231,20 +272,42 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
       fc.fields.push_back(d);
       fc.copies.push_back(c);
     }
-    // outermost copies that still win more than 1% of their face
+    // copies on the border of E that win more than 1% of their face and are
+    // exact at a border vertex off the cut: their front goes on beyond E
+    auto unfinished = [&](std::size_t c) {
+      typedef typename Extended_surface<Point>::Mesh::Face_index EF;
+      const auto& m = E.mesh;
+      const auto h0 = m.halfedge(EF(static_cast<typename Extended_surface<Point>::Mesh::size_type>(c)));
+      auto h = h0;
+      do
+      {
+        if(m.is_border(m.opposite(h)))
+          for(auto v : {m.source(h), m.target(h)})
+          {
+            const std::size_t o = E.original_vertex[v];
+            if(!on_cut[o] && distance[v] <= field[o] + exact_slack) return true;
+          }
+        h = m.next(h);
+      } while(h != h0);
+      return false;
+    };
+    // Without guided growth: the copies of the outermost ring that win (the
+    // rings grow uniformly, so that ring is E's border).
     const int outer = builder.statistics().rings;
+    auto frontier = [&](std::size_t c) {
+      return guided ? (E.ring[c] > 0 && unfinished(c)) : (outer > 0 && E.ring[c] == outer);
+    };
     std::vector<char> grow_from(E.mesh.number_of_faces(), 0);
     std::size_t winning = 0;
     for(std::size_t f = 0; f < nf; ++f)
     {
       const Face_copies& fc = face_copies[f];
-      bool has_outer = false;
-      for(std::size_t c : fc.copies) has_outer |= (E.ring[c] == outer && outer > 0);
-      if(!has_outer) continue;
+      bool candidate = false;
+      for(std::size_t c : fc.copies) candidate |= frontier(c);
+      if(!candidate) continue;
       const Lower_envelope<double> env = compute_lower_envelope<double>(fc.fields);
       for(const auto& cell : env.cells)
-        if(E.ring[fc.copies[cell.copy]] == outer &&
-           barycentric_area(cell.polygon) > 0.01 * 0.5)
+        if(frontier(fc.copies[cell.copy]) && barycentric_area(cell.polygon) > 0.01 * 0.5)
         {
           grow_from[fc.copies[cell.copy]] = 1;
           ++winning;
@@ -252,9 +315,9 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     }
     st.outer_copies_winning = winning;
     st.time_envelope += seconds_since(t0);
-    if(winning == 0 || builder.statistics().rings >= maximum_rings) break;
-    // grow a band of `extension_step` rings around the winners: each ring from
-    // the copies the previous one added
+    if(winning == 0 || st.solves >= maximum_solves || builder.statistics().rings >= maximum_rings) break;
+    // grow a band of `extension_step` rings around them (each ring from the
+    // copies the previous one added), then wherever fronts are still exact
     t0 = std::chrono::steady_clock::now();
     for(int step = 0; step < extension_step && builder.statistics().rings < maximum_rings; ++step)
     {
@@ -263,6 +326,7 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
       grow_from.assign(builder.number_of_copies(), 0);
       for(std::size_t c = before; c < builder.number_of_copies(); ++c) grow_from[c] = 1;
     }
+    if(guided) builder.grow_guided(maximum_rings);
     st.time_extension += seconds_since(t0);
   }
   st.extended_surface = E.statistics;

@@ -43,6 +43,9 @@ struct Extended_surface_statistics
   std::size_t refused_faces = 0;        ///< faces not added elsewhere: a fan would exceed its star (should be 0)
   std::size_t refused_gluings = 0;      ///< closures refused: wrong cone angle, overlap or order (should be 0)
   std::size_t number_of_leaf_vertices = 0; ///< copies of leaves of K (fans winding past 2π)
+  std::size_t guided_faces = 0;         ///< copies added by the growth guided by the exact distance on M
+  int guided_rings = 0;                 ///< rings the guided growth took (its deepest copy)
+  bool guided_ring_cap_hit = false;     ///< the guided growth stopped at the ring cap
   double time = 0;
 };
 
@@ -105,11 +108,26 @@ class Extended_surface_builder
     bool leaf;                // the copy at a leaf of K: winds past 2π, never closes
     bool closed;
   };
+  // A copy laid out in the plane of its chain (the copies it was grown from,
+  // back to the cut edge where the chain left D), with the front it carries:
+  // the virtual source of that front and the predicted distance at its
+  // corners. A corner is live when the front is still exact there (within the
+  // slack, against the exact distance on M) and its straight path crosses the
+  // chain's root cut edge: only such fronts need copies beyond the cut.
+  typedef std::array<double, 2> Point_2;
+  struct Unfolding
+  {
+    std::array<Point_2, 3> corner;
+    Point_2 source;
+    std::array<Point_2, 2> root;
+    std::array<double, 3> value;
+    std::array<bool, 3> live;
+  };
 
 public:
   Extended_surface_builder(const TriangleMesh& tm, const Rough_cut_locus<TriangleMesh>& rcl,
                            VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim)
-    : tm_(tm), vpm_(vpm)
+    : tm_(tm), vpm_(vpm), vim_(vim), fim_(fim)
   {
     const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
     corner_.resize(nf);
@@ -190,6 +208,7 @@ public:
         if(fan.leaf) ++stats_.number_of_leaf_vertices;
       }
     stats_.faces_per_ring.push_back(nf);
+    find_shadowed_vertices(rcl, vim);
   }
 
   /// Grows one ring: a copy across every boundary edge of E (one at a time),
@@ -206,6 +225,55 @@ public:
     for(const auto& [c, k] : boundary)
       if(copies_[c].nb[k] == none) add_copy_across(c, k, r);
     stats_.faces_per_ring.push_back(copies_.size() - before);
+  }
+
+  /// Gives the builder the exact geodesic distance on M (per vertex index), which
+  /// guides `grow_guided`; `slack` is how much above it a predicted distance
+  /// still counts as exact.
+  void set_exact_distance(const std::vector<double>* exact, double slack)
+  {
+    exact_ = exact;
+    slack_ = slack;
+  }
+
+  /// Grows copies across the boundary of E, one face at a time in rings, while
+  /// the front they continue is predicted (by unfolding) to be exact at a
+  /// vertex it reaches through the cut: the shadow of every cut edge, however
+  /// wide, plus one face of margin. Stops when no such front is left or at
+  /// `maximum_rings`.
+  void grow_guided(int maximum_rings)
+  {
+    if(exact_ == nullptr) return;
+    std::vector<std::pair<std::uint32_t, int> > frontier;
+    for(std::uint32_t c = 0; c < copies_.size(); ++c)
+      for(int k = 0; k < 3; ++k)
+        if(copies_[c].nb[k] == none && edge_is_live(c, k)) frontier.emplace_back(c, k);
+    int deepest = stats_.rings;
+    const std::size_t start = copies_.size();
+    while(!frontier.empty())
+    {
+      if(stats_.rings >= maximum_rings)
+      {
+        stats_.guided_ring_cap_hit = true;
+        break;
+      }
+      const int r = ++stats_.rings;
+      const std::size_t before = copies_.size();
+      std::vector<std::pair<std::uint32_t, int> > next;
+      for(const auto& [c, k] : frontier)
+      {
+        if(copies_[c].nb[k] != none) continue;
+        const std::uint32_t n = add_copy_across(c, k, r);
+        if(n == none) continue;
+        for(int j = 0; j < 3; ++j)
+          if(copies_[n].nb[j] == none && edge_is_live(n, j)) next.emplace_back(n, j);
+      }
+      stats_.faces_per_ring.push_back(copies_.size() - before);
+      if(copies_.size() > before) deepest = r;
+      frontier.swap(next);
+    }
+    stats_.guided_faces += copies_.size() - start;
+    stats_.guided_rings = std::max(stats_.guided_rings, deepest);
   }
 
   template <class Point>
@@ -324,7 +392,7 @@ private:
   }
   std::uint32_t limit(const Fan& f) const { return f.leaf ? 2 * degree_[f.vertex] : degree_[f.vertex]; }
 
-  void add_copy_across(std::uint32_t c, int k, int r)
+  std::uint32_t add_copy_across(std::uint32_t c, int k, int r)
   {
     const std::uint32_t f = copies_[c].face;
     const std::uint32_t g = across_[f][k];
@@ -335,7 +403,7 @@ private:
     if(fu.last != c || fw.first != c || fu.closed || fw.closed)
     {
       ++stats_.refused_gluings;
-      return;
+      return none;
     }
     if(fu.size + 1 > limit(fu) || fw.size + 1 > limit(fw))
     {
@@ -343,8 +411,10 @@ private:
         ++stats_.winding_bound_hits;
       else
         ++stats_.refused_faces;
-      return;
+      return none;
     }
+    // the new copy continues the front of c across edge k
+    const Unfolding parent = c < unfold_.size() && copies_[c].ring > 0 ? unfold_[c] : root_unfolding(c, k);
     const std::uint32_t n = static_cast<std::uint32_t>(copies_.size());
     Copy nc;
     nc.face = g;
@@ -364,8 +434,144 @@ private:
     ++fans_[xu].size;
     fans_[xw].first = n;
     ++fans_[xw].size;
+    if(unfold_.size() <= n) unfold_.resize(n + 1);
+    unfold_[n] = unfold_across(parent, k, g, kg);
     close_if_complete(xu);
     close_if_complete(find(xw));
+    return n;
+  }
+
+  // A vertex is shadowed when its path in the tree of stage 1 (which follows
+  // the geodesics) goes through a vertex of K from one of its sectors in D to
+  // another: its shortest path crosses the cut, so its copy in D is inexact and
+  // the front that crossed needs copies there.
+  void find_shadowed_vertices(const Rough_cut_locus<TriangleMesh>& rcl, VertexIndexMap vim)
+  {
+    const std::size_t nv = vertex_of_.size();
+    on_cut_.assign(nv, 0);
+    shadowed_.assign(nv, 0);
+    for(std::uint32_t f = 0; f < corner_.size(); ++f)
+      for(int k = 0; k < 3; ++k)
+        if(edge_cut_[f][k]) on_cut_[corner_[f][k]] = on_cut_[corner_[f][(k + 1) % 3]] = 1;
+    if(rcl.parent.size() != nv) return;
+    // the sector of p in D that holds the (uncut) edge from p to q
+    auto sector = [&](std::uint32_t p, std::uint32_t q) -> std::uint32_t {
+      for(auto h : CGAL::halfedges_around_source(vertex_of_[p], tm_))
+        if(static_cast<std::uint32_t>(get(vim_, target(h, tm_))) == q && !is_border(h, tm_))
+        {
+          const std::uint32_t f = static_cast<std::uint32_t>(get(fim_, face(h, tm_)));
+          return find(copies_[f].corner[position_of(f, p)]);
+        }
+      return none;
+    };
+    // parents before children: by depth in the tree
+    std::vector<std::uint32_t> parent(nv), order, depth(nv, none);
+    for(std::uint32_t v = 0; v < nv; ++v) parent[v] = static_cast<std::uint32_t>(get(vim, rcl.parent[v]));
+    for(std::uint32_t v = 0; v < nv; ++v)
+    {
+      std::vector<std::uint32_t> chain;
+      std::uint32_t x = v;
+      while(depth[x] == none && parent[x] != x && chain.size() <= nv) { chain.push_back(x); x = parent[x]; }
+      if(depth[x] == none) depth[x] = 0;
+      for(auto it = chain.rbegin(); it != chain.rend(); ++it) depth[*it] = depth[parent[*it]] + 1;
+    }
+    order.resize(nv);
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return depth[a] < depth[b]; });
+    for(std::uint32_t x : order)
+    {
+      const std::uint32_t p = parent[x];
+      if(p == x) continue;
+      bool crosses = false;
+      const std::uint32_t pp = parent[p];
+      if(on_cut_[p] && pp != p) crosses = sector(p, pp) != sector(p, x);
+      shadowed_[x] = shadowed_[p] || crosses;
+    }
+  }
+
+  Point_2 planar_third(const Point_2& a, const Point_2& b, double la, double lb, double side) const
+  {
+    // the point at distances la from a and lb from b, on the given side of ab
+    const double ex = b[0] - a[0], ey = b[1] - a[1];
+    const double l = std::sqrt(ex * ex + ey * ey);
+    const double t = (la * la - lb * lb + l * l) / (2 * l);
+    const double h = std::sqrt(std::max(0.0, la * la - t * t));
+    const double ux = ex / l, uy = ey / l;
+    const double s = side >= 0 ? 1.0 : -1.0;
+    return {{a[0] + t * ux - s * h * uy, a[1] + t * uy + s * h * ux}};
+  }
+  double length(std::uint32_t v, std::uint32_t w) const
+  {
+    const auto p = get(vpm_, vertex_of_[v]), q = get(vpm_, vertex_of_[w]);
+    return std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
+  }
+  static double cross(const Point_2& o, const Point_2& a, const Point_2& b)
+  {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  }
+  static bool segments_meet(const Point_2& p, const Point_2& q, const Point_2& a, const Point_2& b)
+  {
+    const double d1 = cross(p, q, a), d2 = cross(p, q, b), d3 = cross(a, b, p), d4 = cross(a, b, q);
+    return ((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) && ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0));
+  }
+  static double distance_2(const Point_2& a, const Point_2& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
+
+  // D copy c laid out with its cut edge k on the x axis and the face above it;
+  // its front is the exact distance on M, its virtual source found from the
+  // distances at the edge's ends, on the face's side (the front reaches the
+  // cut from there).
+  Unfolding root_unfolding(std::uint32_t c, int k) const
+  {
+    Unfolding u;
+    const std::uint32_t f = copies_[c].face;
+    const std::uint32_t va = corner_[f][k], vb = corner_[f][(k + 1) % 3], vq = corner_[f][(k + 2) % 3];
+    const double l = length(va, vb);
+    u.corner[k] = {{0, 0}};
+    u.corner[(k + 1) % 3] = {{l, 0}};
+    u.corner[(k + 2) % 3] = planar_third(u.corner[k], u.corner[(k + 1) % 3], length(va, vq), length(vb, vq), 1);
+    // the root: the cut edge, prolonged by twice its length at both ends (the
+    // cut is a zigzag of edges: a front crossing it nearby is the one this
+    // chain continues; the sheet grown across the neighbouring edges is the
+    // same, made once)
+    u.root = {{Point_2{{-2 * l, 0}}, Point_2{{3 * l, 0}}}};
+    u.live = {{false, false, false}};
+    u.value = {{0, 0, 0}};
+    u.source = {{0.5 * l, 0}};
+    if(exact_ == nullptr) return u;
+    for(int j = 0; j < 3; ++j) u.value[j] = (*exact_)[corner_[f][j]];
+    u.source = planar_third(u.corner[k], u.corner[(k + 1) % 3], u.value[k], u.value[(k + 1) % 3], 1);
+    u.live[k] = u.live[(k + 1) % 3] = true;
+    return u;
+  }
+
+  // The copy of face g grown across edge k of a copy laid out as p: its edge kg
+  // is that edge, reversed; its third corner goes on the other side.
+  Unfolding unfold_across(const Unfolding& p, int k, std::uint32_t g, int kg) const
+  {
+    Unfolding u;
+    u.source = p.source;
+    u.root = p.root;
+    const int a = kg, b = (kg + 1) % 3, x = (kg + 2) % 3;
+    u.corner[a] = p.corner[(k + 1) % 3];
+    u.corner[b] = p.corner[k];
+    u.value[a] = p.value[(k + 1) % 3];
+    u.value[b] = p.value[k];
+    u.live[a] = p.live[(k + 1) % 3];
+    u.live[b] = p.live[k];
+    const double side = -cross(u.corner[a], u.corner[b], p.corner[(k + 2) % 3]); // the parent's third corner's other side
+    u.corner[x] = planar_third(u.corner[a], u.corner[b], length(corner_[g][a], corner_[g][x]),
+                               length(corner_[g][b], corner_[g][x]), side >= 0 ? 1 : -1);
+    u.value[x] = distance_2(u.source, u.corner[x]);
+    const std::uint32_t vx = corner_[g][x];
+    u.live[x] = exact_ != nullptr && std::abs(u.value[x] - (*exact_)[vx]) <= slack_ && (shadowed_[vx] || on_cut_[vx]) &&
+                segments_meet(u.source, u.corner[x], u.root[0], u.root[1]);
+    return u;
+  }
+
+  bool edge_is_live(std::uint32_t c, int k) const
+  {
+    if(copies_[c].ring == 0) return exact_ != nullptr; // a cut edge of D: its front crosses it
+    return c < unfold_.size() && (unfold_[c].live[k] || unfold_[c].live[(k + 1) % 3]);
   }
 
   void close_if_complete(std::uint32_t x0)
@@ -433,6 +639,8 @@ private:
 
   const TriangleMesh& tm_;
   VertexPointMap vpm_;
+  VertexIndexMap vim_;
+  FaceIndexMap fim_;
   std::vector<vertex_descriptor> vertex_of_;
   std::vector<std::array<std::uint32_t, 3> > corner_, across_;
   std::vector<std::array<std::uint8_t, 3> > across_edge_;
@@ -441,6 +649,10 @@ private:
   std::vector<Copy> copies_;
   std::vector<std::uint32_t> uf_parent_;
   std::vector<Fan> fans_;
+  std::vector<Unfolding> unfold_; // per copy (entries of D copies unused)
+  std::vector<char> on_cut_, shadowed_; // per vertex of M
+  const std::vector<double>* exact_ = nullptr;
+  double slack_ = 0;
   Extended_surface_statistics stats_;
 };
 

@@ -63,6 +63,7 @@ struct Ridge_curve_statistics
   std::size_t rejoined_segments = 0;      ///< merged segments put back to join two pieces of the ridge
   std::size_t dropped_components = 0;     ///< detached pieces dropped
   std::size_t pruned_spur_segments = 0;   ///< free-end segments with a gradient jump below the minimum angle
+  std::size_t pruned_flat_end_segments = 0; ///< free-end segments with no positive curvature near their end
   std::size_t ridge_segments = 0, junctions = 0, free_ends = 0, components = 0, cycles = 0;
   double total_length = 0;
   double time = 0;
@@ -301,16 +302,6 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
         for(int j = 0; j < k1; ++j) eh = em.next(eh);
         const auto eo = em.opposite(eh);
         const bool glued = !em.is_border(eo) && std::size_t(em.face(eo)) == cells[c2].copy;
-        // equal values along the interval (the fields restricted to the edge)
-        auto value = [&](const Cell& c, int k, const Q& t) { // t along corner k -> k+1
-          const double tt = CGAL::to_double(t);
-          return (1 - tt) * c.field[k] + tt * c.field[(k + 1) % 3];
-        };
-        const bool equal = std::abs(value(cells[c1], k1, cuts[i]) - value(cells[c2], k2, Q(1) - cuts[i])) <=
-                               same_front_tolerance &&
-                           std::abs(value(cells[c1], k1, cuts[i + 1]) - value(cells[c2], k2, Q(1) - cuts[i + 1])) <=
-                               same_front_tolerance;
-        if(glued || equal) { fronts.unite(c1, c2); continue; }
         // strength: jump of the gradient across the edge, unfolded
         const auto g1 = field_gradient(cp1, cells[c1].field), g2 = field_gradient(cp2, cells[c2].field);
         const auto pa = get(vpm, source(h1, tm)), pb = get(vpm, target(h1, tm));
@@ -329,13 +320,28 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
         auto dot = [](const std::array<double, 3>& a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
         const double jt = dot(g1, t) - dot(g2, t);
         const double jn = dot(g1, m1.data()) + dot(g2, m2.data());
+        const double strength = std::sqrt(jt * jt + jn * jn);
+        // unfolded into f1's plane, g2 is (g2.t, -g2.m2) in the frame (t, m1)
+        const double angle = angle_between(dot(g1, t), dot(g1, m1.data()), dot(g2, t), -dot(g2, m2.data()));
+        // one front across the edge: equal values along it and no real gradient
+        // jump (below the spur angle: copies of one front, one slightly inexact
+        // off the edge). Equal values alone are no test: where the ridge runs
+        // along the edge, both fronts agree on it.
+        auto value = [&](const Cell& c, int k, const Q& tq) { // tq along corner k -> k+1
+          const double tt = CGAL::to_double(tq);
+          return (1 - tt) * c.field[k] + tt * c.field[(k + 1) % 3];
+        };
+        const bool equal = std::abs(value(cells[c1], k1, cuts[i]) - value(cells[c2], k2, Q(1) - cuts[i])) <=
+                               same_front_tolerance &&
+                           std::abs(value(cells[c1], k1, cuts[i + 1]) - value(cells[c2], k2, Q(1) - cuts[i + 1])) <=
+                               same_front_tolerance &&
+                           (strength <= 1e-6 || angle < minimum_angle);
+        if(glued || equal) { fronts.unite(c1, c2); continue; }
         // the two edge points, from f1's side
         std::array<Q, 3> la = {{Q(0), Q(0), Q(0)}}, lb = la;
         la[k1] = Q(1) - cuts[i]; la[(k1 + 1) % 3] = cuts[i];
         lb[k1] = Q(1) - cuts[i + 1]; lb[(k1 + 1) % 3] = cuts[i + 1];
-        // unfolded into f1's plane, g2 is (g2.t, -g2.m2) in the frame (t, m1)
-        const double angle = angle_between(dot(g1, t), dot(g1, m1.data()), dot(g2, t), -dot(g2, m2.data()));
-        segments.push_back(Segment{node_at(f1, la), node_at(f1, lb), c1, c2, std::sqrt(jt * jt + jn * jn), angle, true});
+        segments.push_back(Segment{node_at(f1, la), node_at(f1, lb), c1, c2, strength, angle, true});
         ++st.edge_segments;
       }
     }
@@ -382,12 +388,72 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
     }
   }
 
-  // ---- prune weak spurs: a free end whose segment's gradient jump is below
-  //      `minimum_angle` is no ridge one can locate (two fronts meeting at a
-  //      small angle, or two copies each inexact at a corner) and is removed,
-  //      repeatedly. Cycles and segments between junctions are never touched.
+  // ---- prune spurs. A free end of the cut locus of a polyhedral surface is a
+  //      vertex of positive curvature (angle sum < 2π): a free end with no
+  //      such curvature around it (within 2.5 mean edges, summed with signs) is
+  //      no ridge end, typically the crease along the shadow line of the tip
+  //      of a false branch of K, where two copies that are both slightly
+  //      inexact meet at a moderate angle (below 3 x `minimum_angle`; a
+  //      branch that stops short of its true end has a large one). A free end whose segment's gradient jump is below
+  //      `minimum_angle` cannot be located either (two fronts meeting at a
+  //      small angle). Both are removed, repeatedly; cycles and segments
+  //      between junctions are never touched.
   if(minimum_angle > 0)
   {
+    const double pi = 3.14159265358979323846;
+    const double minimum_curvature = 0.5 * minimum_angle * pi / 180;
+    const std::size_t nv = num_vertices(tm);
+    std::vector<typename GT::vertex_descriptor> vertex_of(nv);
+    for(auto v : vertices(tm)) vertex_of[get(vim, v)] = v;
+    std::vector<double> curvature(nv, 2 * pi);
+    double mean_edge = 0;
+    for(auto e : edges(tm))
+      mean_edge += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(e, tm)), get(vpm, target(e, tm)))));
+    mean_edge /= static_cast<double>(ne);
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      const auto h = corner_halfedges(f);
+      const auto p = corner_points(f);
+      for(int k = 0; k < 3; ++k)
+      {
+        const Point& a = p[k]; const Point& b = p[(k + 1) % 3]; const Point& c = p[(k + 2) % 3];
+        const double ux = CGAL::to_double(b.x() - a.x()), uy = CGAL::to_double(b.y() - a.y()),
+                     uz = CGAL::to_double(b.z() - a.z());
+        const double vx = CGAL::to_double(c.x() - a.x()), vy = CGAL::to_double(c.y() - a.y()),
+                     vz = CGAL::to_double(c.z() - a.z());
+        const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+        curvature[get(vim, source(h[k], tm))] -=
+            std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz);
+      }
+    }
+    // total curvature of the vertices within `radius` of a node (grown from its face's corners)
+    const double radius = 2.5 * mean_edge;
+    std::vector<std::size_t> seen_at(nv, std::size_t(-1));
+    auto curvature_near = [&](std::size_t node) {
+      const Point& p = nodes[node].point;
+      std::vector<std::size_t> stack;
+      double total = 0;
+      for(const auto h : corner_halfedges(nodes[node].face))
+      {
+        const std::size_t v = get(vim, source(h, tm));
+        if(seen_at[v] != node) { seen_at[v] = node; stack.push_back(v); total += curvature[v]; }
+      }
+      while(!stack.empty())
+      {
+        const std::size_t v = stack.back();
+        stack.pop_back();
+        for(auto h : CGAL::halfedges_around_target(halfedge(vertex_of[v], tm), tm))
+        {
+          const std::size_t w = get(vim, source(h, tm));
+          if(seen_at[w] == node) continue;
+          seen_at[w] = node;
+          if(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, vertex_of[w]), p))) > radius) continue;
+          total += curvature[w];
+          stack.push_back(w);
+        }
+      }
+      return total;
+    };
     std::vector<std::vector<std::size_t> > at(nodes.size());
     std::vector<std::size_t> live(nodes.size(), 0);
     for(std::size_t i = 0; i < segments.size(); ++i)
@@ -405,9 +471,12 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       if(live[v] != 1) continue;
       std::size_t seg = std::size_t(-1);
       for(std::size_t i : at[v]) if(segments[i].ridge) { seg = i; break; }
-      if(seg == std::size_t(-1) || segments[seg].angle >= minimum_angle) continue;
+      if(seg == std::size_t(-1)) continue;
+      const bool weak = segments[seg].angle < minimum_angle;
+      const bool flat_end = !weak && segments[seg].angle < 3 * minimum_angle && curvature_near(v) < minimum_curvature;
+      if(!weak && !flat_end) continue;
       segments[seg].ridge = false;
-      ++st.pruned_spur_segments;
+      ++(weak ? st.pruned_spur_segments : st.pruned_flat_end_segments);
       --live[v];
       const std::size_t w = segments[seg].a == v ? segments[seg].b : segments[seg].a;
       if(--live[w] == 1) leaves.push_back(w);

@@ -42,7 +42,8 @@ enum class Edge_role : unsigned char
   shortest_path_tree, ///< an edge of the Dijkstra shortest-path tree T
   source_face,        ///< an edge of a face holding the source (never crossed by T*)
   dual_pruned,        ///< crossed by an edge of T* whose significance is below the tolerance
-  dual_kept           ///< crossed by an edge of T* that survives the pruning
+  dual_kept,          ///< crossed by an edge of T* that survives the pruning
+  dual_leaf_extension ///< crossed by a pruned edge of T* that extends a kept leaf (see `leaf_extension`)
 };
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -55,6 +56,7 @@ struct Rough_cut_locus_statistics
   std::size_t number_of_core_dual_edges = 0; ///< dual edges on the 2-core (significance = total area)
   std::size_t number_of_kept_dual_edges = 0;
   std::size_t number_of_kept_dual_leaves = 0; ///< faces with exactly one kept dual edge
+  std::size_t number_of_leaf_extension_edges = 0; ///< pruned dual edges added to extend kept leaves
   std::size_t number_of_cut_edges = 0;        ///< |K|
   std::size_t number_of_cut_vertices = 0;
   std::size_t number_of_cut_leaves = 0;       ///< vertices of degree 1 in K
@@ -98,6 +100,8 @@ struct Rough_cut_locus
   std::vector<edge_descriptor> dual_edges;
   /// those that survive the pruning (the kept dual structure), by increasing edge index
   std::vector<edge_descriptor> kept_dual_edges;
+  /// pruned ones that extend leaves of the kept dual structure, by increasing edge index
+  std::vector<edge_descriptor> leaf_extension_edges;
   /// the primal cut graph K, by increasing edge index
   std::vector<edge_descriptor> cut_edges;
 
@@ -369,18 +373,56 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   for(std::size_t d = 0; d < nd; ++d)
     if(kept[d])
     {
-      r.edge_role[ei(r.dual_edges[d])] = Edge_role::dual_kept;
-      r.kept_dual_edges.push_back(r.dual_edges[d]);
       ++kept_degree[dual_faces_of[d][0]];
       ++kept_degree[dual_faces_of[d][1]];
     }
-  st.number_of_kept_dual_edges = nkept;
   for(std::size_t f = 0; f < nf; ++f) st.number_of_kept_dual_leaves += (kept_degree[f] == 1);
+
+  // 3-. Leaf extension: from every leaf face of the kept structure, go on into
+  //     its most significant pruned child branch while that is significant
+  //     enough (one path per leaf). The ridge shows only where K cuts: beyond
+  //     K's end, the disk's copy of a face carries the smaller of the two
+  //     fronts at its corners and dominates every other copy.
+  std::vector<char> extension(nd, 0);
+  const double extension_threshold = get_leaf_extension(np) * threshold;
+  if(!st.fallback_single_rung && get_leaf_extension(np) < 1)
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      if(kept_degree[f] != 1) continue;
+      for(std::size_t cur = f;;)
+      {
+        std::size_t best = none;
+        for(unsigned char k = 0; k < dual_degree[cur]; ++k)
+        {
+          const std::size_t d = dual_of_face[cur][k];
+          if(kept[d] || extension[d] || !peeled[d] || child_face[d] == cur) continue;
+          const double I = r.significance[ei(r.dual_edges[d])];
+          if(I >= extension_threshold && (best == none || I > r.significance[ei(r.dual_edges[best])])) best = d;
+        }
+        if(best == none) break;
+        extension[best] = 1;
+        cur = child_face[best];
+      }
+    }
+  for(std::size_t d = 0; d < nd; ++d)
+    if(extension[d])
+    {
+      r.edge_role[ei(r.dual_edges[d])] = Edge_role::dual_leaf_extension;
+      r.leaf_extension_edges.push_back(r.dual_edges[d]);
+      ++st.number_of_leaf_extension_edges;
+    }
+  for(std::size_t d = 0; d < nd; ++d)
+    if(kept[d])
+    {
+      r.edge_role[ei(r.dual_edges[d])] = Edge_role::dual_kept;
+      r.kept_dual_edges.push_back(r.dual_edges[d]);
+    }
+  st.number_of_kept_dual_edges = nkept;
 
   // 3a. The rungs (mesh edges crossed by kept dual edges) reduced to a
   //     maximum-significance spanning tree (Kruskal).
   std::vector<std::size_t> rungs;
-  for(std::size_t d = 0; d < nd; ++d) if(kept[d]) rungs.push_back(d);
+  for(std::size_t d = 0; d < nd; ++d) if(kept[d] || extension[d]) rungs.push_back(d);
   std::stable_sort(rungs.begin(), rungs.end(), [&](std::size_t a, std::size_t b) {
     return r.significance[ei(r.dual_edges[a])] > r.significance[ei(r.dual_edges[b])];
   });
@@ -498,6 +540,8 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   std::sort(r.dual_edges.begin(), r.dual_edges.end(),
             [&](edge_descriptor a, edge_descriptor b) { return ei(a) < ei(b); });
   std::sort(r.kept_dual_edges.begin(), r.kept_dual_edges.end(),
+            [&](edge_descriptor a, edge_descriptor b) { return ei(a) < ei(b); });
+  std::sort(r.leaf_extension_edges.begin(), r.leaf_extension_edges.end(),
             [&](edge_descriptor a, edge_descriptor b) { return ei(a) < ei(b); });
   st.time_cut_graph = seconds_since(t0);
 
