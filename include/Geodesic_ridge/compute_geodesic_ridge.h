@@ -48,84 +48,30 @@ solver(const Solver& s, const NamedParameters& np)
 }
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Extension rings grown everywhere before the first solve (default 3).
-inline CGAL::Named_function_parameters<int, internal_np::initial_rings_t> initial_rings(int k)
-{
-  return CGAL::Named_function_parameters<int, internal_np::initial_rings_t>(k);
-}
-template <class NamedParameters>
-CGAL::Named_function_parameters<int, internal_np::initial_rings_t, NamedParameters>
-initial_rings(int k, const NamedParameters& np)
-{
-  return CGAL::Named_function_parameters<int, internal_np::initial_rings_t, NamedParameters>(k, np);
-}
+GEODESIC_RIDGE_NAMED_PARAMETER(int, initial_rings)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Rings grown, after a solve, around the outermost copies that still win area
 /// of their face, before the next solve (default 4).
-inline CGAL::Named_function_parameters<int, internal_np::extension_step_t> extension_step(int k)
-{
-  return CGAL::Named_function_parameters<int, internal_np::extension_step_t>(k);
-}
-template <class NamedParameters>
-CGAL::Named_function_parameters<int, internal_np::extension_step_t, NamedParameters>
-extension_step(int k, const NamedParameters& np)
-{
-  return CGAL::Named_function_parameters<int, internal_np::extension_step_t, NamedParameters>(k, np);
-}
+GEODESIC_RIDGE_NAMED_PARAMETER(int, extension_step)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Hard cap on extension rings (default 7, so at most two solves with the
 /// default initial rings and step): rings beyond the initial ones grow only
 /// where copies of the outermost ring still win area of their face.
-inline CGAL::Named_function_parameters<int, internal_np::maximum_rings_t> maximum_rings(int k)
-{
-  return CGAL::Named_function_parameters<int, internal_np::maximum_rings_t>(k);
-}
-template <class NamedParameters>
-CGAL::Named_function_parameters<int, internal_np::maximum_rings_t, NamedParameters>
-maximum_rings(int k, const NamedParameters& np)
-{
-  return CGAL::Named_function_parameters<int, internal_np::maximum_rings_t, NamedParameters>(k, np);
-}
+GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_rings)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Solves on the extended surface at most (default 2): after a solve, E grows
 /// again only where copies on its border are still exact and win area.
-inline CGAL::Named_function_parameters<int, internal_np::maximum_solves_t> maximum_solves(int k)
-{
-  return CGAL::Named_function_parameters<int, internal_np::maximum_solves_t>(k);
-}
-template <class NamedParameters>
-CGAL::Named_function_parameters<int, internal_np::maximum_solves_t, NamedParameters>
-maximum_solves(int k, const NamedParameters& np)
-{
-  return CGAL::Named_function_parameters<int, internal_np::maximum_solves_t, NamedParameters>(k, np);
-}
+GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_solves)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// With `true`, E also grows wherever a front continued across the cut is
 /// predicted (by unfolding, against the distance on M) to be still exact at a
 /// vertex whose shortest path crosses the cut: the whole shadow of a false
 /// branch of K, up to `maximum_rings`.
-inline CGAL::Named_function_parameters<bool, internal_np::guided_extension_t> guided_extension(bool b)
-{
-  return CGAL::Named_function_parameters<bool, internal_np::guided_extension_t>(b);
-}
-template <class NamedParameters>
-CGAL::Named_function_parameters<bool, internal_np::guided_extension_t, NamedParameters>
-guided_extension(bool b, const NamedParameters& np)
-{
-  return CGAL::Named_function_parameters<bool, internal_np::guided_extension_t, NamedParameters>(b, np);
-}
+GEODESIC_RIDGE_NAMED_PARAMETER(bool, guided_extension)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Free ends of the ridge whose gradient jump is below this angle (degrees,
 /// default 15) are pruned, repeatedly; 0 keeps every branch.
-inline CGAL::Named_function_parameters<double, internal_np::minimum_spur_angle_t> minimum_spur_angle(double a)
-{
-  return CGAL::Named_function_parameters<double, internal_np::minimum_spur_angle_t>(a);
-}
-template <class NamedParameters>
-CGAL::Named_function_parameters<double, internal_np::minimum_spur_angle_t, NamedParameters>
-minimum_spur_angle(double a, const NamedParameters& np)
-{
-  return CGAL::Named_function_parameters<double, internal_np::minimum_spur_angle_t, NamedParameters>(a, np);
-}
+GEODESIC_RIDGE_NAMED_PARAMETER(double, minimum_spur_angle)
 } // namespace parameters
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -210,11 +156,8 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   double mean_edge = 0;
   for(auto e : edges(tm)) mean_edge += distance_between(vpm, source(e, tm), target(e, tm));
   mean_edge /= static_cast<double>(num_edges(tm));
-  const double same_front_tolerance = 1e-6 * mean_edge;
   // a predicted or solved distance within this of the exact one counts as exact
   const double exact_slack = 0.05 * mean_edge;
-  std::vector<char> on_cut(num_vertices(tm), 0);
-  for(auto e : rcl.cut_edges) on_cut[get(vim, source(e, tm))] = on_cut[get(vim, target(e, tm))] = 1;
 
   // Stage 2: extend (rings everywhere, then wherever a front is still exact
   // beyond the cut), solve; extend again only where copies on the border of
@@ -223,7 +166,7 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   Extended_surface_builder<TriangleMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(vim)>,
                            std::decay_t<decltype(fim)>, std::decay_t<decltype(eim)> >
       builder(tm, rcl, vpm, vim, fim, eim);
-  builder.set_exact_distance(&field, exact_slack);
+  if(guided) builder.set_exact_distance(&field, exact_slack, rcl);
   for(int r = 0; r < initial_rings; ++r) builder.grow_ring();
   if(guided) builder.grow_guided(maximum_rings);
   st.time_extension += seconds_since(t0);
@@ -285,7 +228,7 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
           for(auto v : {m.source(h), m.target(h)})
           {
             const std::size_t o = E.original_vertex[v];
-            if(!on_cut[o] && distance[v] <= field[o] + exact_slack) return true;
+            if(!builder.on_cut(o) && distance[v] <= field[o] + exact_slack) return true;
           }
         h = m.next(h);
       } while(h != h0);
@@ -333,7 +276,7 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 
   // Stage 2c + 3: exact envelopes and the ridge curve
   t0 = std::chrono::steady_clock::now();
-  assemble_ridge_curve(tm, E, face_copies, same_front_tolerance, minimum_angle, vpm, vim, fim, eim, result.polylines,
+  assemble_ridge_curve(tm, E, face_copies, mean_edge, minimum_angle, vpm, vim, fim, eim, result.polylines,
                        result.regions, st.ridge);
   st.time_assembly = seconds_since(t0);
   st.ridge.time = st.time_assembly;

@@ -208,7 +208,10 @@ public:
         if(fan.leaf) ++stats_.number_of_leaf_vertices;
       }
     stats_.faces_per_ring.push_back(nf);
-    find_shadowed_vertices(rcl, vim);
+    on_cut_.assign(nv, 0);
+    for(std::uint32_t f = 0; f < nf; ++f)
+      for(int k = 0; k < 3; ++k)
+        if(edge_cut_[f][k]) on_cut_[corner_[f][k]] = on_cut_[corner_[f][(k + 1) % 3]] = 1;
   }
 
   /// Grows one ring: a copy across every boundary edge of E (one at a time),
@@ -228,13 +231,19 @@ public:
   }
 
   /// Gives the builder the exact geodesic distance on M (per vertex index), which
-  /// guides `grow_guided`; `slack` is how much above it a predicted distance
-  /// still counts as exact.
-  void set_exact_distance(const std::vector<double>* exact, double slack)
+  /// guides `grow_guided` (with the tree of `rcl`, for the shadows of the cut);
+  /// `slack` is how far from it a predicted distance still counts as exact.
+  /// Call it before growing any ring.
+  void set_exact_distance(const std::vector<double>* exact, double slack,
+                          const Rough_cut_locus<TriangleMesh>& rcl)
   {
     exact_ = exact;
     slack_ = slack;
+    find_shadowed_vertices(rcl);
   }
+
+  /// whether vertex `v` of M (by index) is on the cut graph K
+  bool on_cut(std::size_t v) const { return on_cut_[v] != 0; }
 
   /// Grows copies across the boundary of E, one face at a time in rings, while
   /// the front they continue is predicted (by unfolding) to be exact at a
@@ -413,8 +422,6 @@ private:
         ++stats_.refused_faces;
       return none;
     }
-    // the new copy continues the front of c across edge k
-    const Unfolding parent = c < unfold_.size() && copies_[c].ring > 0 ? unfold_[c] : root_unfolding(c, k);
     const std::uint32_t n = static_cast<std::uint32_t>(copies_.size());
     Copy nc;
     nc.face = g;
@@ -434,8 +441,12 @@ private:
     ++fans_[xu].size;
     fans_[xw].first = n;
     ++fans_[xw].size;
-    if(unfold_.size() <= n) unfold_.resize(n + 1);
-    unfold_[n] = unfold_across(parent, k, g, kg);
+    if(exact_ != nullptr)
+    {
+      // the new copy continues the front of c across edge k
+      if(unfold_.size() <= n) unfold_.resize(n + 1);
+      unfold_[n] = unfold_across(copies_[c].ring > 0 ? unfold_[c] : root_unfolding(c, k), k, g, kg);
+    }
     close_if_complete(xu);
     close_if_complete(find(xw));
     return n;
@@ -445,14 +456,10 @@ private:
   // the geodesics) goes through a vertex of K from one of its sectors in D to
   // another: its shortest path crosses the cut, so its copy in D is inexact and
   // the front that crossed needs copies there.
-  void find_shadowed_vertices(const Rough_cut_locus<TriangleMesh>& rcl, VertexIndexMap vim)
+  void find_shadowed_vertices(const Rough_cut_locus<TriangleMesh>& rcl)
   {
     const std::size_t nv = vertex_of_.size();
-    on_cut_.assign(nv, 0);
     shadowed_.assign(nv, 0);
-    for(std::uint32_t f = 0; f < corner_.size(); ++f)
-      for(int k = 0; k < 3; ++k)
-        if(edge_cut_[f][k]) on_cut_[corner_[f][k]] = on_cut_[corner_[f][(k + 1) % 3]] = 1;
     if(rcl.parent.size() != nv) return;
     // the sector of p in D that holds the (uncut) edge from p to q
     auto sector = [&](std::uint32_t p, std::uint32_t q) -> std::uint32_t {
@@ -466,7 +473,7 @@ private:
     };
     // parents before children: by depth in the tree
     std::vector<std::uint32_t> parent(nv), order, depth(nv, none);
-    for(std::uint32_t v = 0; v < nv; ++v) parent[v] = static_cast<std::uint32_t>(get(vim, rcl.parent[v]));
+    for(std::uint32_t v = 0; v < nv; ++v) parent[v] = static_cast<std::uint32_t>(get(vim_, rcl.parent[v]));
     for(std::uint32_t v = 0; v < nv; ++v)
     {
       std::vector<std::uint32_t> chain;
@@ -516,6 +523,7 @@ private:
   }
   static double distance_2(const Point_2& a, const Point_2& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
 
+  // (Unfoldings exist only when an exact distance is given.)
   // D copy c laid out with its cut edge k on the x axis and the face above it;
   // its front is the exact distance on M, its virtual source found from the
   // distances at the edge's ends, on the face's side (the front reaches the
@@ -535,9 +543,6 @@ private:
     // same, made once)
     u.root = {{Point_2{{-2 * l, 0}}, Point_2{{3 * l, 0}}}};
     u.live = {{false, false, false}};
-    u.value = {{0, 0, 0}};
-    u.source = {{0.5 * l, 0}};
-    if(exact_ == nullptr) return u;
     for(int j = 0; j < 3; ++j) u.value[j] = (*exact_)[corner_[f][j]];
     u.source = planar_third(u.corner[k], u.corner[(k + 1) % 3], u.value[k], u.value[(k + 1) % 3], 1);
     u.live[k] = u.live[(k + 1) % 3] = true;
@@ -563,7 +568,7 @@ private:
                                length(corner_[g][b], corner_[g][x]), side >= 0 ? 1 : -1);
     u.value[x] = distance_2(u.source, u.corner[x]);
     const std::uint32_t vx = corner_[g][x];
-    u.live[x] = exact_ != nullptr && std::abs(u.value[x] - (*exact_)[vx]) <= slack_ && (shadowed_[vx] || on_cut_[vx]) &&
+    u.live[x] = std::abs(u.value[x] - (*exact_)[vx]) <= slack_ && (shadowed_[vx] || on_cut_[vx]) &&
                 segments_meet(u.source, u.corner[x], u.root[0], u.root[1]);
     return u;
   }

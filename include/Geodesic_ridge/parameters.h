@@ -36,22 +36,25 @@ constexpr double default_leaf_extension = 1.0;
 
 namespace parameters {
 
+// Defines the two overloads of the named parameter `name` (value type `T`, tag
+// `internal_np::name##_t`): `name(value)`, and `name(value, np)`, which adds it
+// to the named parameters `np` (CGAL's list is closed to other packages).
+#define GEODESIC_RIDGE_NAMED_PARAMETER(T, name)                                                         \
+  inline CGAL::Named_function_parameters<T, internal_np::name##_t> name(T value)                      \
+  {                                                                                                   \
+    return CGAL::Named_function_parameters<T, internal_np::name##_t>(value);                          \
+  }                                                                                                   \
+  template <class NamedParameters>                                                                    \
+  CGAL::Named_function_parameters<T, internal_np::name##_t, NamedParameters> name(T value,            \
+                                                                                  const NamedParameters& np) \
+  {                                                                                                   \
+    return CGAL::Named_function_parameters<T, internal_np::name##_t, NamedParameters>(value, np);     \
+  }
+
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Dual edges of the cut locus whose significance is below `t` times the
 /// total area are pruned. `t` must be in [0, 0.5).
-inline CGAL::Named_function_parameters<double, internal_np::tolerance_t>
-tolerance(double t)
-{
-  return CGAL::Named_function_parameters<double, internal_np::tolerance_t>(t);
-}
-
-/// Same, added to the named parameters `np`.
-template <class NamedParameters>
-CGAL::Named_function_parameters<double, internal_np::tolerance_t, NamedParameters>
-tolerance(double t, const NamedParameters& np)
-{
-  return CGAL::Named_function_parameters<double, internal_np::tolerance_t, NamedParameters>(t, np);
-}
+GEODESIC_RIDGE_NAMED_PARAMETER(double, tolerance)
 
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Every leaf of the kept dual structure goes on along its most significant
@@ -59,19 +62,7 @@ tolerance(double t, const NamedParameters& np)
 /// is at least `f` times the tolerance times the total area (default 1: no
 /// extension). The ridge is only found where the cut graph cuts: a branch that
 /// stops short of the ridge's end misses its end. `f` in [0, 1].
-inline CGAL::Named_function_parameters<double, internal_np::leaf_extension_t>
-leaf_extension(double f)
-{
-  return CGAL::Named_function_parameters<double, internal_np::leaf_extension_t>(f);
-}
-
-/// Same, added to the named parameters `np`.
-template <class NamedParameters>
-CGAL::Named_function_parameters<double, internal_np::leaf_extension_t, NamedParameters>
-leaf_extension(double f, const NamedParameters& np)
-{
-  return CGAL::Named_function_parameters<double, internal_np::leaf_extension_t, NamedParameters>(f, np);
-}
+GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_extension)
 
 } // namespace parameters
 

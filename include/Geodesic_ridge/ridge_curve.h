@@ -110,7 +110,7 @@ struct Face_copies
 template <class TriangleMesh, class Point, class VertexPointMap, class VertexIndexMap,
           class FaceIndexMap, class EdgeIndexMap>
 void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>& E,
-                          const std::vector<Face_copies>& face_copies, double same_front_tolerance,
+                          const std::vector<Face_copies>& face_copies, double mean_edge,
                           double minimum_angle,
                           VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim,
                           std::vector<std::vector<Ridge_point<Point> > >& polylines,
@@ -122,6 +122,8 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
   typedef typename GT::face_descriptor face_descriptor;
   typedef Exact_number Q;
   const std::size_t nf = num_faces(tm), ne = num_edges(tm);
+  // equal fields within this are one front (solver noise)
+  const double same_front_tolerance = 1e-6 * mean_edge;
 
   // faces by index, with corner points and halfedges
   std::vector<face_descriptor> face_of(nf);
@@ -394,10 +396,11 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
   //      no ridge end, typically the crease along the shadow line of the tip
   //      of a false branch of K, where two copies that are both slightly
   //      inexact meet at a moderate angle (below 3 x `minimum_angle`; a
-  //      branch that stops short of its true end has a large one). A free end whose segment's gradient jump is below
-  //      `minimum_angle` cannot be located either (two fronts meeting at a
-  //      small angle). Both are removed, repeatedly; cycles and segments
-  //      between junctions are never touched.
+  //      branch that stops short of its true end has a large one). A free end
+  //      whose segment's gradient jump is below `minimum_angle` cannot be
+  //      located either (two fronts meeting at a small angle). Both are
+  //      removed, repeatedly; cycles and segments between junctions are never
+  //      touched.
   if(minimum_angle > 0)
   {
     const double pi = 3.14159265358979323846;
@@ -406,10 +409,6 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
     std::vector<typename GT::vertex_descriptor> vertex_of(nv);
     for(auto v : vertices(tm)) vertex_of[get(vim, v)] = v;
     std::vector<double> curvature(nv, 2 * pi);
-    double mean_edge = 0;
-    for(auto e : edges(tm))
-      mean_edge += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(e, tm)), get(vpm, target(e, tm)))));
-    mean_edge /= static_cast<double>(ne);
     for(std::size_t f = 0; f < nf; ++f)
     {
       const auto h = corner_halfedges(f);

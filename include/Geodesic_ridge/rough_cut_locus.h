@@ -384,8 +384,9 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   //     K's end, the disk's copy of a face carries the smaller of the two
   //     fronts at its corners and dominates every other copy.
   std::vector<char> extension(nd, 0);
-  const double extension_threshold = get_leaf_extension(np) * threshold;
-  if(!st.fallback_single_rung && get_leaf_extension(np) < 1)
+  const double leaf_extension = get_leaf_extension(np);
+  const double extension_threshold = leaf_extension * threshold;
+  if(!st.fallback_single_rung && leaf_extension < 1)
     for(std::size_t f = 0; f < nf; ++f)
     {
       if(kept_degree[f] != 1) continue;
