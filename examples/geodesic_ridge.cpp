@@ -3,7 +3,7 @@
 // geodesic_ridge: the package's command-line program (DESIGN.md §8).
 //
 //   geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z)
-//                  [--tolerance T] [--solver exact] [--ridge OUT.polylines.txt]
+//                  [--tolerance T] [--solver exact|fmm] [--ridge OUT.polylines.txt]
 //                  [--rough-cut OUT.polylines.txt] [--stats OUT.json]
 //
 // Exit status: 0 success, 1 bad input (mesh, source, parameter), 2 bad command
@@ -43,7 +43,7 @@ struct Usage_error : std::runtime_error
 
 const char* usage_text =
     "usage: geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z)\n"
-    "                      [--tolerance T] [--solver exact] [--ridge OUT.polylines.txt]\n"
+    "                      [--tolerance T] [--solver exact|fmm] [--ridge OUT.polylines.txt]\n"
     "                      [--rough-cut OUT.polylines.txt] [--stats OUT.json] [--png OUT.png]\n"
     "  MESH              closed, connected, manifold triangle mesh (.off, .obj, .ply)\n"
     "  --source-vertex V source at vertex V (0-based, file order)\n"
@@ -51,7 +51,8 @@ const char* usage_text =
     "                    source at the point (X,Y,Z) of face FACE (0-based, file order)\n"
     "  --tolerance T     significance tolerance in [0, 0.5) (default 0.025)\n"
     "  --solver NAME     geodesic solver on the extended surface: exact (CGAL\n"
-    "                    Surface_mesh_shortest_path; the only one in this version)\n"
+    "                    Surface_mesh_shortest_path, default) or fmm (fast marching,\n"
+    "                    first order; heat and dijkstra are not in this version)\n"
     "  --ridge OUT       write the ridge curve as CGAL polylines (n x1 y1 z1 ... per line)\n"
     "  --rough-cut OUT   write the rough cut locus K (stage 1) as CGAL polylines\n"
     "  --stats OUT.json  write counts, timings and parameters as JSON\n"
@@ -124,9 +125,9 @@ Options parse(int argc, char** argv)
     else if(a == "--solver")
     {
       o.solver = value(i, a);
-      if(o.solver != "exact")
+      if(o.solver != "exact" && o.solver != "fmm")
         throw Geodesic_ridge::Invalid_parameter_error("unknown solver '" + o.solver +
-                                                      "': this version has 'exact' only");
+                                                      "': this version has 'exact' and 'fmm'");
     }
     else if(a == "--stats") o.stats = value(i, a);
     else if(a.size() > 1 && a[0] == '-')
@@ -219,7 +220,8 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
                                       json_number(r.source.location.second[1]) + ", " +
                                       json_number(r.source.location.second[2]) + "]}") << ",\n"
      << "    \"tolerance\": " << json_number(o.tolerance) << ",\n"
-     << "    \"solver\": " << json_string(g.solver) << "\n"
+     << "    \"solver\": " << json_string(g.solver) << ",\n"
+     << "    \"tree_from_solver\": " << (g.tree_from_solver ? "true" : "false") << "\n"
      << "  },\n"
      << "  \"mesh\": {\"vertices\": " << s.number_of_vertices << ", \"edges\": " << s.number_of_edges
      << ", \"faces\": " << s.number_of_faces << ", \"genus\": " << s.genus
@@ -243,6 +245,7 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
      << "    \"faces_over_mesh_faces\": " << json_number(double(x.number_of_faces) / s.number_of_faces) << ",\n"
      << "    \"rings\": " << x.rings << ",\n"
      << "    \"solves\": " << g.solves << ",\n"
+     << "    \"predicted_passes\": " << g.predicted_passes << ",\n"
      << "    \"outer_copies_still_winning\": " << g.outer_copies_winning << ",\n"
      << "    \"closures\": " << x.number_of_closures << ",\n"
      << "    \"leaf_vertices\": " << x.number_of_leaf_vertices << ",\n"
@@ -270,6 +273,7 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
      << "  },\n"
      << "  \"timings_seconds\": {\n"
      << "    \"read_and_validate\": " << json_number(read_seconds) << ",\n"
+     << "    \"tree_distances\": " << json_number(g.time_solve_on_mesh) << ",\n"
      << "    \"shortest_path_tree\": " << json_number(s.time_shortest_path_tree) << ",\n"
      << "    \"significance\": " << json_number(s.time_significance) << ",\n"
      << "    \"cut_graph\": " << json_number(s.time_cut_graph) << ",\n"
@@ -293,7 +297,14 @@ int run(const Options& o)
   Geodesic_ridge::IO::read_triangle_mesh(o.mesh, mesh);
   const double read_seconds = Geodesic_ridge::internal::seconds_since(t0);
 
-  const auto np = Geodesic_ridge::parameters::tolerance(o.tolerance);
+  namespace p = Geodesic_ridge::parameters;
+  // the solver is a type: one call per model
+  auto compute = [&](const auto& source) {
+    if(o.solver == "fmm")
+      return Geodesic_ridge::compute_ridge_curve(
+          mesh, source, p::tolerance(o.tolerance, p::solver(Geodesic_ridge::Fast_marching_solver())));
+    return Geodesic_ridge::compute_ridge_curve(mesh, source, p::tolerance(o.tolerance));
+  };
   std::optional<Ridge> ridge;
   if(o.source_vertex)
   {
@@ -301,7 +312,7 @@ int run(const Options& o)
       throw Geodesic_ridge::Invalid_source_error(
           "source vertex " + std::to_string(*o.source_vertex) + " is out of range: the mesh has " +
           std::to_string(mesh.number_of_vertices()) + " vertices");
-    ridge = Geodesic_ridge::compute_ridge_curve(mesh, vertex_descriptor(Mesh::size_type(*o.source_vertex)), np);
+    ridge = compute(vertex_descriptor(Mesh::size_type(*o.source_vertex)));
   }
   else
   {
@@ -314,7 +325,7 @@ int run(const Options& o)
               parse_number("source z", o.source_point_text[2]));
     const face_descriptor f(Mesh::size_type(*o.source_face));
     const std::pair<face_descriptor, std::array<double, 3> > loc(f, locate_in_face(mesh, f, q));
-    ridge = Geodesic_ridge::compute_ridge_curve(mesh, loc, np);
+    ridge = compute(loc);
   }
   const auto& r = ridge->rough_cut_locus;
   const auto& s = r.statistics;

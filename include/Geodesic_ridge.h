@@ -14,6 +14,7 @@
 #include <Geodesic_ridge/ridge_curve.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>
+#include <Geodesic_ridge/solvers/Fast_marching_solver.h>
 #include <Geodesic_ridge/IO/png.h>
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/IO/polylines.h>

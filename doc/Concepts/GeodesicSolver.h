@@ -8,9 +8,10 @@ runs it on the extended surface, a `CGAL::Surface_mesh` with a boundary, whose
 vertices of cone angle up to 4π (at the ends of the cut) are border vertices.
 
 \cgalHasModel `Geodesic_ridge::Exact_solver` (CGAL `Surface_mesh_shortest_path`)
+\cgalHasModel `Geodesic_ridge::Fast_marching_solver` (first-order fast marching)
 
-Planned models: fast marching, heat method (`CGAL::Heat_method_3`), Dijkstra on
-the edge graph (an upper bound, for tests).
+Planned models: heat method (`CGAL::Heat_method_3`), Dijkstra on the edge graph
+(an upper bound, for tests).
 */
 class GeodesicSolver
 {

@@ -12,6 +12,7 @@
 #include <Geodesic_ridge/ridge_curve.h>
 #include <Geodesic_ridge/rough_cut_locus.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>
+#include <Geodesic_ridge/solvers/Fast_marching_solver.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -29,6 +30,8 @@ struct maximum_rings_t {};
 struct minimum_spur_angle_t {};
 struct maximum_solves_t {};
 struct guided_extension_t {};
+struct tree_from_solver_t {};
+struct predicted_extension_t {};
 } // namespace internal_np
 
 namespace parameters {
@@ -47,11 +50,11 @@ solver(const Solver& s, const NamedParameters& np)
   return CGAL::Named_function_parameters<Solver, internal_np::solver_t, NamedParameters>(s, np);
 }
 /// \ingroup PkgGeodesicRidgeNamedParameters
-/// Extension rings grown everywhere before the first solve (default 3).
+/// Extension rings grown everywhere before the first pass (default 3).
 GEODESIC_RIDGE_NAMED_PARAMETER(int, initial_rings)
 /// \ingroup PkgGeodesicRidgeNamedParameters
-/// Rings grown, after a solve, around the outermost copies that still win area
-/// of their face, before the next solve (default 4).
+/// Rings grown, after a pass, around the outermost copies that still win area
+/// of their face, before the next pass (default 4).
 GEODESIC_RIDGE_NAMED_PARAMETER(int, extension_step)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Hard cap on extension rings (default 7, so at most two solves with the
@@ -59,8 +62,10 @@ GEODESIC_RIDGE_NAMED_PARAMETER(int, extension_step)
 /// where copies of the outermost ring still win area of their face.
 GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_rings)
 /// \ingroup PkgGeodesicRidgeNamedParameters
-/// Solves on the extended surface at most (default 2): after a solve, E grows
-/// again only where copies on its border are still exact and win area.
+/// Passes on the extended surface at most (default 2): after a pass, E grows
+/// again only where copies on its border still win area. With predicted
+/// extension the passes are fast marching and the solver runs once more, on
+/// the final E.
 GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_solves)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// With `true`, E also grows wherever a front continued across the cut is
@@ -68,6 +73,19 @@ GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_solves)
 /// vertex whose shortest path crosses the cut: the whole shadow of a false
 /// branch of K, up to `maximum_rings`.
 GEODESIC_RIDGE_NAMED_PARAMETER(bool, guided_extension)
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// Which distances on M shape the shortest-path tree of stage 1: with `false`
+/// (default) fast marching (`Fast_marching_solver`, a fraction of one exact
+/// solve), with `true` the chosen solver (one more solve). Guided extension
+/// needs the solver's distances and implies `true`.
+GEODESIC_RIDGE_NAMED_PARAMETER(bool, tree_from_solver)
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// With `true` (default), the dynamic extension decides where to grow from
+/// fast-marching passes on E, and the solver runs once, on the final E; with
+/// `false`, every extension step is decided by a solve of the solver.
+/// `maximum_solves` bounds the passes of either kind. Guided extension implies
+/// `false` (it compares with the solver's distances on M).
+GEODESIC_RIDGE_NAMED_PARAMETER(bool, predicted_extension)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Free ends of the ridge whose gradient jump is below this angle (degrees,
 /// default 15) are pruned, repeatedly; 0 keeps every branch.
@@ -80,12 +98,14 @@ struct Geodesic_ridge_statistics
 {
   std::string solver;
   double tolerance = 0;
-  int solves = 0;                 ///< solves on the extended surface (one per dynamic extension step)
-  std::size_t outer_copies_winning = 0; ///< at the last solve: outer-ring copies still winning area
+  int solves = 0;                 ///< solves of the solver on the extended surface
+  int predicted_passes = 0;       ///< fast-marching passes on E that decided the extension steps
+  std::size_t outer_copies_winning = 0; ///< at the last solve: copies on E's border still winning area
   Rough_cut_locus_statistics rough_cut_locus;
   Extended_surface_statistics extended_surface;
   Ridge_curve_statistics ridge;
-  double time_solve_on_mesh = 0; ///< the solver on M, whose distances shape the tree of stage 1
+  bool tree_from_solver = false; ///< the tree followed the solver's distances on M (else fast marching)
+  double time_solve_on_mesh = 0; ///< the distances on M that shape the tree of stage 1
   double time_rough_cut_locus = 0, time_extension = 0, time_solve = 0, time_envelope = 0,
          time_assembly = 0, time_total = 0;
 };
@@ -126,24 +146,32 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   const int maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), 7);
   const int maximum_solves = choose_parameter(get_parameter(np, internal_np::maximum_solves_t()), 2);
   const bool guided = choose_parameter(get_parameter(np, internal_np::guided_extension_t()), false);
+  const bool tree_from_solver =
+      guided || choose_parameter(get_parameter(np, internal_np::tree_from_solver_t()), false);
   if(initial_rings < 0 || maximum_rings < initial_rings || extension_step < 1)
     throw Invalid_parameter_error(
         "extension rings: need 0 <= initial_rings <= maximum_rings and extension_step >= 1");
   if(maximum_solves < 1) throw Invalid_parameter_error("maximum_solves must be at least 1");
+  const bool predicted =
+      !guided && choose_parameter(get_parameter(np, internal_np::predicted_extension_t()), true);
 
   Ridge_curve<TriangleMesh, Point> result;
   Geodesic_ridge_statistics& st = result.statistics;
   st.solver = solver.name();
 
-  // Stage 1, on the tree of the solver's distances on M (one solve, the floor
-  // of the exact pipeline anyway): see rough_cut_locus_impl
+  // Stage 1, on the tree that descends a geodesic distance on M (see
+  // rough_cut_locus_impl): fast marching, or the solver itself
   auto t0 = std::chrono::steady_clock::now();
   std::vector<double> field(num_vertices(tm));
+  st.tree_from_solver = tree_from_solver;
+  if(tree_from_solver)
   {
     auto field_map = boost::make_iterator_property_map(field.begin(), vim);
     if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX) solver(tm, src.vertex, field_map);
     else solver(tm, src.location, field_map);
   }
+  else
+    fast_marching_distances(tm, vpm, vim, src.seeds, field);
   st.time_solve_on_mesh = seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
   result.rough_cut_locus = rough_cut_locus_impl(tm, src, np, &field);
@@ -159,9 +187,9 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   // a predicted or solved distance within this of the exact one counts as exact
   const double exact_slack = 0.05 * mean_edge;
 
-  // Stage 2: extend (rings everywhere, then wherever a front is still exact
-  // beyond the cut), solve; extend again only where copies on the border of
-  // E are still exact and win, and solve again.
+  // Stage 2: extend (rings everywhere, then, with guided growth, wherever a
+  // front is still exact beyond the cut), solve; extend again only where
+  // copies on the border of E still win, and solve again.
   t0 = std::chrono::steady_clock::now();
   Extended_surface_builder<TriangleMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(vim)>,
                            std::decay_t<decltype(fim)>, std::decay_t<decltype(eim)> >
@@ -173,17 +201,35 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 
   Extended_surface<Point> E;
   std::vector<Face_copies> face_copies;
+  // With predicted extension, fast-marching passes decide where E grows, and
+  // the solver runs once, on the final E (the extension only needs to know
+  // which border copies still win; fast marching's first-order error is
+  // nearly the same for neighbouring fronts).
+  bool final_pass = !predicted, grown = true;
+  int passes = 0;
   for(;;)
   {
     t0 = std::chrono::steady_clock::now();
-    builder.materialize(E, src, vim, fim);
+    if(grown) builder.materialize(E, src, vim, fim);
+    grown = false;
     st.time_extension += seconds_since(t0);
 
     t0 = std::chrono::steady_clock::now();
     std::vector<double> distance(E.mesh.number_of_vertices());
-    if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance));
-    else solver(E.mesh, E.source_location, CGAL::make_property_map(distance));
-    ++st.solves;
+    if(final_pass)
+    {
+      if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance));
+      else solver(E.mesh, E.source_location, CGAL::make_property_map(distance));
+      ++st.solves;
+    }
+    else
+    {
+      const Fast_marching_solver fmm;
+      if(E.source_is_vertex) fmm(E.mesh, E.source_vertex, CGAL::make_property_map(distance));
+      else fmm(E.mesh, E.source_location, CGAL::make_property_map(distance));
+      ++st.predicted_passes;
+    }
+    ++passes;
     st.time_solve += seconds_since(t0);
     if(E.source_is_vertex && distance[E.source_vertex] != 0)
       throw Algorithm_error("the solver's distance at the source is not 0");
@@ -258,7 +304,13 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     }
     st.outer_copies_winning = winning;
     st.time_envelope += seconds_since(t0);
-    if(winning == 0 || st.solves >= maximum_solves || builder.statistics().rings >= maximum_rings) break;
+    if(predicted && final_pass) break;
+    if(winning == 0 || passes >= maximum_solves || builder.statistics().rings >= maximum_rings)
+    {
+      if(!predicted) break;
+      final_pass = true; // E is final: the one solve of the solver
+      continue;
+    }
     // grow a band of `extension_step` rings around them (each ring from the
     // copies the previous one added), then wherever fronts are still exact
     t0 = std::chrono::steady_clock::now();
@@ -270,6 +322,7 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
       for(std::size_t c = before; c < builder.number_of_copies(); ++c) grow_from[c] = 1;
     }
     if(guided) builder.grow_guided(maximum_rings);
+    grown = true;
     st.time_extension += seconds_since(t0);
   }
   st.extended_surface = E.statistics;
@@ -298,7 +351,9 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 /// \param np named parameters: `Geodesic_ridge::parameters::tolerance(t)`,
 ///   `solver(s)` (a `GeodesicSolver`, default `Exact_solver`), `initial_rings(k)`
 ///   (default 3), `extension_step(k)` (default 4), `maximum_rings(k)` (default 7),
-///   then CGAL's `vertex_point_map`,
+///   `maximum_solves(k)` (default 2), `predicted_extension(b)` (default true),
+///   `tree_from_solver(b)` (default false), `minimum_spur_angle(deg)` (default 15),
+///   the experimental `guided_extension(b)` and `leaf_extension(f)`, then CGAL's `vertex_point_map`,
 ///   `vertex_index_map`, `face_index_map`, `edge_index_map`.
 /// \post the ridge is connected, a tree on a genus-0 surface, with exactly 2g
 ///   independent cycles on genus g (`Algorithm_error` otherwise).

@@ -263,6 +263,18 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       const auto h2s = corner_halfedges(f2);
       int k2 = 0;
       while(h2s[k2] != h2) ++k2;
+      // most edges: one cell on either side, glued in E across this edge (one
+      // sheet), so one front and no exact arithmetic
+      if(envelopes[f1].cells.size() == 1 && envelopes[f2].cells.size() == 1)
+      {
+        const std::size_t c1 = cells_of_face[f1][0], c2 = cells_of_face[f2][0];
+        const auto& em = E.mesh;
+        typedef typename Extended_surface<Point>::Mesh::Face_index EF;
+        auto eh = em.halfedge(EF(static_cast<typename Extended_surface<Point>::Mesh::size_type>(cells[c1].copy)));
+        for(int j = 0; j < k1; ++j) eh = em.next(eh);
+        const auto eo = em.opposite(eh);
+        if(!em.is_border(eo) && std::size_t(em.face(eo)) == cells[c2].copy) { fronts.unite(c1, c2); continue; }
+      }
       // intervals (t along h1: from source(h1) to target(h1)) and the winning cell on each side
       struct Interval { Q lo, hi; std::size_t cell; };
       auto intervals = [&](std::size_t f, int k, bool reversed) {

@@ -1,14 +1,15 @@
 # Runs the CLI on one mesh and checks that it wrote a non-empty rough cut and a
 # non-empty ridge in CGAL's polylines format, and a JSON stats file with the
 # expected cycle rank of K and cycles of the ridge (2g).
-#   cmake -DCLI=prog -DMESH=file -DSOURCE="--source-vertex;0" -DOUT=dir -DGENUS=g -P expect_rough_cut.cmake
+#   cmake -DCLI=prog -DMESH=file -DSOURCE="--source-vertex;0" -DOUT=dir -DGENUS=g [-DEXTRA="--solver;fmm"]
+#         -P expect_rough_cut.cmake
 file(MAKE_DIRECTORY ${OUT})
 get_filename_component(name ${MESH} NAME_WE)
-string(REPLACE ";" "_" tag "${SOURCE}")
+string(REPLACE ";" "_" tag "${SOURCE}${EXTRA}")
 set(cut ${OUT}/${name}${tag}.polylines.txt)
 set(stats ${OUT}/${name}${tag}.json)
 set(ridge ${OUT}/${name}${tag}.ridge.polylines.txt)
-execute_process(COMMAND ${CLI} ${MESH} ${SOURCE} --rough-cut ${cut} --ridge ${ridge} --stats ${stats}
+execute_process(COMMAND ${CLI} ${MESH} ${SOURCE} ${EXTRA} --rough-cut ${cut} --ridge ${ridge} --stats ${stats}
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "exit ${rc}: ${err}")
@@ -32,6 +33,9 @@ if(NOT json MATCHES "\"cut_cycle_rank\": ${rank},")
 endif()
 if(NOT json MATCHES "\"cycles\": ${rank},")
   message(FATAL_ERROR "stats do not report ${rank} ridge cycles:\n${json}")
+endif()
+if(EXTRA MATCHES "fmm" AND NOT json MATCHES "\"solver\": \"fmm\"")
+  message(FATAL_ERROR "stats do not name the fmm solver:\n${json}")
 endif()
 if(NOT json MATCHES "\"components\": 1,")
   message(FATAL_ERROR "the ridge is not connected:\n${json}")

@@ -1,0 +1,186 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// Fast marching on a triangle mesh (Kimmel & Sethian 1998): a Dijkstra-like
+// sweep whose update across a triangle assumes a locally planar front, so the
+// distances are first-order accurate and, unlike Dijkstra's on the edge graph,
+// nearly isotropic. O(n log n), no system to solve.
+#ifndef GEODESIC_RIDGE_SOLVERS_FAST_MARCHING_SOLVER_H
+#define GEODESIC_RIDGE_SOLVERS_FAST_MARCHING_SOLVER_H
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace Geodesic_ridge {
+namespace internal {
+
+// The distance at C from a planar front that has value ta at A and tb at B,
+// if the front's ray through C crosses the segment AB (upwind); otherwise the
+// better of the two edge paths through A or B.
+inline double fast_marching_update(const std::array<double, 3>& a, double ta, const std::array<double, 3>& b,
+                                   double tb, const std::array<double, 3>& c)
+{
+  const std::array<double, 3> ab = {{b[0] - a[0], b[1] - a[1], b[2] - a[2]}};
+  const std::array<double, 3> ac = {{c[0] - a[0], c[1] - a[1], c[2] - a[2]}};
+  const std::array<double, 3> bc = {{c[0] - b[0], c[1] - b[1], c[2] - b[2]}};
+  auto dot = [](const std::array<double, 3>& x, const std::array<double, 3>& y) {
+    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+  };
+  const double via_edges = std::min(ta + std::sqrt(dot(ac, ac)), tb + std::sqrt(dot(bc, bc)));
+  const double len = std::sqrt(dot(ab, ab));
+  if(!(len > 0)) return via_edges;
+  // C laid out in the plane with A = (0, 0), B = (len, 0), C above the x axis
+  const double cx = dot(ac, ab) / len;
+  const double cy2 = dot(ac, ac) - cx * cx;
+  if(!(cy2 > 0)) return via_edges;
+  const double cy = std::sqrt(cy2);
+  // circular front: a virtual source S below AB at distances ta, tb from A, B
+  // (exact in a flat region around one point source)
+  const double sx = (ta * ta - tb * tb + len * len) / (2 * len);
+  const double sy2 = ta * ta - sx * sx;
+  if(sy2 >= 0)
+  {
+    const double sy = -std::sqrt(sy2);
+    const double x0 = sx + (cx - sx) * (-sy) / (cy - sy); // where SC crosses AB
+    if(x0 >= 0 && x0 <= len) return std::min(via_edges, std::sqrt((cx - sx) * (cx - sx) + (cy - sy) * (cy - sy)));
+    return via_edges;
+  }
+  // no such S (ta, tb, |AB| violate the triangle inequality): a planar front
+  const double gx = (tb - ta) / len; // the front's unit direction g, seen along AB
+  if(!(std::abs(gx) < 1)) return via_edges;
+  const double gy = std::sqrt(1 - gx * gx);
+  const double x0 = cx - gx * cy / gy; // where the ray through C crosses AB
+  if(!(x0 >= 0 && x0 <= len)) return via_edges;
+  return std::min(via_edges, ta + gx * cx + gy * cy);
+}
+
+/// Fast-marching distances from `seeds` (vertex index, initial distance) over
+/// the triangle mesh `tm` with points `vpm`, written to `distance` by vertex
+/// index (infinity where unreachable).
+template <class TriangleMesh, class VertexPointMap, class VertexIndexMap>
+void fast_marching_distances(const TriangleMesh& tm, const VertexPointMap& vpm, const VertexIndexMap& vim,
+                             const std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor,
+                                                         double> >& seeds,
+                             std::vector<double>& distance)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::size_t nv = num_vertices(tm);
+  std::vector<std::array<double, 3> > p(nv);
+  std::vector<vertex_descriptor> vertex_of(nv);
+  for(vertex_descriptor v : vertices(tm))
+  {
+    const auto& q = get(vpm, v);
+    p[get(vim, v)] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+    vertex_of[get(vim, v)] = v;
+  }
+  distance.assign(nv, inf);
+  std::vector<char> accepted(nv, 0);
+  typedef std::pair<double, std::size_t> Entry;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > trial;
+  for(const auto& s : seeds)
+  {
+    const std::size_t i = get(vim, s.first);
+    if(s.second < distance[i]) { distance[i] = s.second; trial.push(Entry(s.second, i)); }
+  }
+  auto relax = [&](std::size_t w, double value) {
+    if(!accepted[w] && value < distance[w]) { distance[w] = value; trial.push(Entry(value, w)); }
+  };
+  while(!trial.empty())
+  {
+    const Entry top = trial.top();
+    trial.pop();
+    const std::size_t v = top.second;
+    if(accepted[v] || top.first > distance[v]) continue;
+    accepted[v] = 1;
+    for(auto h : CGAL::halfedges_around_target(vertex_of[v], tm))
+    {
+      const std::size_t a = get(vim, source(h, tm));
+      relax(a, distance[v] + std::sqrt((p[a][0] - p[v][0]) * (p[a][0] - p[v][0]) +
+                                       (p[a][1] - p[v][1]) * (p[a][1] - p[v][1]) +
+                                       (p[a][2] - p[v][2]) * (p[a][2] - p[v][2])));
+      if(is_border(h, tm)) continue;
+      // the face (a, v, b): a front known at v and one other corner updates the third
+      const std::size_t b = get(vim, target(next(h, tm), tm));
+      if(accepted[b] && !accepted[a]) relax(a, fast_marching_update(p[v], distance[v], p[b], distance[b], p[a]));
+      if(accepted[a] && !accepted[b]) relax(b, fast_marching_update(p[v], distance[v], p[a], distance[a], p[b]));
+    }
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicRidgeSolvers
+/// Model of `GeodesicSolver`: first-order fast marching (Kimmel & Sethian),
+/// with the planar-front update across every triangle whose upwind ray crosses
+/// the opposite edge and edge paths elsewhere (obtuse triangles are not
+/// unfolded). Much cheaper than the exact solver; errors of the order of the
+/// edge length near the source. The pipeline uses it to shape the tree of
+/// stage 1 (only the direction of descent matters there).
+struct Fast_marching_solver
+{
+  static const char* name() { return "fmm"; }
+
+  template <class TriangleMesh, class VertexDistanceMap>
+  void operator()(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor s,
+                  VertexDistanceMap distance) const
+  {
+    const std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double> > seeds = {
+        {s, 0.0}};
+    run(tm, seeds, distance);
+  }
+
+  template <class TriangleMesh, class FT, class VertexDistanceMap>
+  void operator()(const TriangleMesh& tm,
+                  const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
+                                  std::array<FT, 3> >& loc,
+                  VertexDistanceMap distance) const
+  {
+    // the corners start at their straight-line distances from the point
+    const auto vpm = get(CGAL::vertex_point, tm);
+    const auto h = halfedge(loc.first, tm);
+    const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3> c = {
+        {source(h, tm), target(h, tm), target(next(h, tm), tm)}};
+    double x[3] = {0, 0, 0};
+    for(int k = 0; k < 3; ++k)
+    {
+      const auto& q = get(vpm, c[k]);
+      const double w = CGAL::to_double(loc.second[k]);
+      x[0] += w * CGAL::to_double(q.x());
+      x[1] += w * CGAL::to_double(q.y());
+      x[2] += w * CGAL::to_double(q.z());
+    }
+    std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double> > seeds;
+    for(int k = 0; k < 3; ++k)
+    {
+      const auto& q = get(vpm, c[k]);
+      const double dx = CGAL::to_double(q.x()) - x[0], dy = CGAL::to_double(q.y()) - x[1],
+                   dz = CGAL::to_double(q.z()) - x[2];
+      seeds.push_back({c[k], std::sqrt(dx * dx + dy * dy + dz * dz)});
+    }
+    run(tm, seeds, distance);
+  }
+
+private:
+  template <class TriangleMesh, class Seeds, class VertexDistanceMap>
+  static void run(const TriangleMesh& tm, const Seeds& seeds, VertexDistanceMap distance)
+  {
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+    std::vector<double> d;
+    internal::fast_marching_distances(tm, get(CGAL::vertex_point, tm), vim, seeds, d);
+    for(auto v : vertices(tm)) put(distance, v, d[get(vim, v)]);
+  }
+};
+
+} // namespace Geodesic_ridge
+
+#endif

@@ -1,0 +1,199 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// The geodesic solvers (models of GeodesicSolver) against known distances:
+//  * the top sheet of a doubly covered square, where geodesics between top
+//    vertices are straight segments (Euclidean distances);
+//  * the exact solver on real meshes;
+//  * Face_location sources: the corners start at their straight distances;
+//  * meshes with a boundary (an extended surface), and the pipeline's
+//    schedules that use fast marching (the tree of stage 1, the extension).
+#include "support/analytic_meshes.h"
+
+#include <Geodesic_ridge/IO/read_triangle_mesh.h>
+#include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/solvers/Exact_solver.h>
+#include <Geodesic_ridge/solvers/Fast_marching_solver.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace Geodesic_ridge::testing;
+typedef Mesh::Vertex_index vertex_descriptor;
+typedef Mesh::Face_index   face_descriptor;
+
+Mesh load(const std::string& name)
+{
+  Mesh m;
+  Geodesic_ridge::IO::read_triangle_mesh(std::string(GEODESIC_RIDGE_DATA_DIR) + "/" + name, m);
+  return m;
+}
+
+template <class Solver, class Source>
+std::vector<double> distances_from(const Mesh& m, const Source& s, const Solver& solver)
+{
+  std::vector<double> d(m.number_of_vertices(), -1);
+  solver(m, s, CGAL::make_property_map(d));
+  return d;
+}
+
+} // namespace
+
+TEST_CASE("fast marching: straight distances on the flat top sheet of a doubly covered square", "[solvers]")
+{
+  for(double perturbation : {0.0, 0.3})
+  {
+    const unsigned seed = test_seed(7);
+    const Doubly_covered_square sq = make_doubly_covered_square(16, perturbation, seed);
+    const vertex_descriptor s = sq.top[5 + (sq.n + 1) * 6];
+    INFO("n 16, perturbation " << perturbation << ", seed " << seed);
+    const std::vector<double> fmm = distances_from(sq.mesh, s, Geodesic_ridge::Fast_marching_solver());
+    // Dijkstra on the edge graph (the tree of stage 1 without a field): the
+    // staircase anisotropy that fast marching removes
+    const auto rcl = Geodesic_ridge::compute_rough_cut_locus(sq.mesh, s);
+    double worst_fmm = 0, worst_dijkstra = 0;
+    for(vertex_descriptor v : sq.top)
+    {
+      const double exact = std::sqrt(CGAL::squared_distance(sq.mesh.point(s), sq.mesh.point(v)));
+      worst_fmm = std::max(worst_fmm, std::abs(fmm[v] - exact));
+      worst_dijkstra = std::max(worst_dijkstra, std::abs(rcl.distance[v] - exact));
+    }
+    const double h = mean_edge_length(sq.mesh);
+    std::cout << "[solvers] top sheet, n 16, perturbation " << perturbation << ": worst error of fast marching "
+              << worst_fmm / h << ", of Dijkstra " << worst_dijkstra / h << " mean edges\n";
+    CHECK(fmm[s] == 0);
+    // the circular-front update is exact in a flat region with one point
+    // source, as long as every update ray crosses its triangle's edge
+    if(perturbation == 0) CHECK(worst_fmm <= 1e-9 * h);
+    // measured 0.20 on the perturbed grid (edge paths where a ray misses)
+    CHECK(worst_fmm <= 0.3 * h);
+    CHECK(worst_fmm <= 0.5 * worst_dijkstra);
+  }
+}
+
+TEST_CASE("fast marching against the exact solver on real meshes", "[solvers]")
+{
+  for(const std::string name : {"bunny_1k.off", "torus_1k.off", "eight.off", "knot_3k.off"})
+  {
+    const Mesh m = load(name);
+    const vertex_descriptor s(static_cast<Mesh::size_type>(m.number_of_vertices() / 3));
+    const std::vector<double> fmm = distances_from(m, s, Geodesic_ridge::Fast_marching_solver());
+    const std::vector<double> exact = distances_from(m, s, Geodesic_ridge::Exact_solver());
+    double sum = 0, worst = 0, lowest = 0;
+    std::size_t counted = 0;
+    for(vertex_descriptor v : m.vertices())
+    {
+      REQUIRE(std::isfinite(fmm[v]));
+      if(v == s) continue;
+      const double rel = (fmm[v] - exact[v]) / exact[v];
+      sum += std::abs(rel);
+      worst = std::max(worst, std::abs(rel));
+      lowest = std::min(lowest, rel);
+      ++counted;
+    }
+    const double mean = sum / counted;
+    std::cout << "[solvers] fast marching vs exact, " << name << " from " << s << ": mean relative error "
+              << mean << ", worst " << worst << ", lowest " << lowest << "\n";
+    INFO(name);
+    CHECK(fmm[s] == 0);
+    // measured: mean 0.005-0.026, worst 0.015-0.27 (bunny_1k: obtuse
+    // triangles, where rays miss and edge paths are taken), lowest -0.02
+    CHECK(mean < 0.035);
+    CHECK(worst < 0.35);
+    CHECK(lowest > -0.05);
+  }
+}
+
+TEST_CASE("fast marching from a Face_location and on a mesh with a boundary", "[solvers]")
+{
+  const Mesh m = load("bunny_1k.off");
+  const face_descriptor f(17);
+  const std::array<double, 3> b = {{0.2, 0.3, 0.5}};
+  const std::vector<double> d = distances_from(m, std::make_pair(f, b), Geodesic_ridge::Fast_marching_solver());
+  const auto h = m.halfedge(f);
+  const Point_3 p = CGAL::barycenter(m.point(m.source(h)), b[0], m.point(m.target(h)), b[1],
+                                     m.point(m.target(m.next(h))), b[2]);
+  for(vertex_descriptor c : {m.source(h), m.target(h), m.target(m.next(h))})
+    CHECK(d[c] == Approx(std::sqrt(CGAL::squared_distance(p, m.point(c)))).epsilon(1e-12));
+  // an extended surface: a mesh with a boundary and cone angles up to 4π at the ends of the cut
+  const auto rcl = Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0));
+  const auto E = Geodesic_ridge::build_extended_surface(m, rcl, 3);
+  const std::vector<double> dE = distances_from(E.mesh, E.source_vertex, Geodesic_ridge::Fast_marching_solver());
+  const std::vector<double> dM = distances_from(m, vertex_descriptor(0), Geodesic_ridge::Exact_solver());
+  std::size_t below = 0;
+  for(auto v : E.mesh.vertices())
+  {
+    REQUIRE(std::isfinite(dE[v]));
+    // paths in E are paths in M: fast marching's error aside, never much shorter
+    if(dE[v] < 0.9 * dM[E.original_vertex[v]] - 1e-9) ++below;
+  }
+  CHECK(dE[E.source_vertex] == 0);
+  CHECK(below == 0);
+}
+
+TEST_CASE("pipeline schedules: predicted extension and the tree's distances", "[solvers][ridge_curve]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  for(const std::string name : {"bunny_1k.off", "torus_1k.off", "eight.off"})
+  {
+    const Mesh m = load(name);
+    const long chi = static_cast<long>(m.number_of_vertices()) - static_cast<long>(m.number_of_edges()) +
+                     static_cast<long>(m.number_of_faces());
+    const std::size_t g = static_cast<std::size_t>((2 - chi) / 2);
+    const vertex_descriptor s(static_cast<Mesh::size_type>(m.number_of_vertices() / 2));
+    std::size_t faces[2][2] = {{0, 0}, {0, 0}};
+    for(int tree_from_solver = 0; tree_from_solver < 2; ++tree_from_solver)
+      for(int predicted = 0; predicted < 2; ++predicted)
+      {
+        INFO(name << " source " << s << ", tree from solver " << tree_from_solver << ", predicted "
+                  << predicted);
+        const auto rc = Geodesic_ridge::compute_ridge_curve(
+            m, s, p::tree_from_solver(tree_from_solver != 0, p::predicted_extension(predicted != 0)));
+        const auto& st = rc.statistics;
+        CHECK(st.ridge.components == 1);
+        CHECK(st.ridge.cycles == 2 * g);
+        CHECK(st.tree_from_solver == (tree_from_solver != 0));
+        if(predicted)
+        {
+          CHECK(st.solves == 1); // the solver only runs on the final E
+          CHECK(st.predicted_passes >= 1);
+          CHECK(st.predicted_passes <= 2);
+        }
+        else
+        {
+          CHECK(st.predicted_passes == 0);
+          CHECK(st.solves >= 1);
+          CHECK(st.solves <= 2);
+        }
+        faces[tree_from_solver][predicted] = st.extended_surface.number_of_faces;
+      }
+    // the predicted extension grows about as much as the solved one
+    for(int t = 0; t < 2; ++t)
+    {
+      INFO(name << ": E " << faces[t][1] << " faces predicted, " << faces[t][0] << " solved");
+      CHECK(double(faces[t][1]) >= 0.8 * double(faces[t][0]));
+      CHECK(double(faces[t][1]) <= 1.25 * double(faces[t][0]));
+    }
+  }
+}
+
+TEST_CASE("fast marching as the pipeline's solver gives a ridge with the right topology", "[solvers]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  for(const std::string name : {"bunny_1k.off", "torus_1k.off"})
+  {
+    const Mesh m = load(name);
+    const auto rc = Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0),
+                                                        p::solver(Geodesic_ridge::Fast_marching_solver()));
+    INFO(name);
+    CHECK(rc.statistics.solver == std::string("fmm"));
+    CHECK(rc.statistics.ridge.components == 1);
+    CHECK(rc.statistics.ridge.cycles == (name == "torus_1k.off" ? 2u : 0u));
+  }
+}
