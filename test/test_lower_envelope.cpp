@@ -493,6 +493,47 @@ TEMPLATE_TEST_CASE("lower envelope: random envelopes are lowest and partition th
   }
 }
 
+TEST_CASE("lower envelope: clipping in CGAL::Mpzf gives the same result as in CGAL::Gmpq", "[lower_envelope]")
+{
+#ifdef CGAL_HAS_MPZF
+  namespace LE = GR::internal::lower_envelope;
+  const int trials = 200;
+  const unsigned base_seed = 31337;
+  std::cout << "lower_envelope Mpzf test: seeds " << base_seed << ".." << base_seed + trials - 1 << "\n";
+  for(int trial = 0; trial < trials; ++trial) {
+    CGAL::Random rng(base_seed + trial);
+    INFO("CGAL::Random seed " << rng.get_seed());
+    const int m = rng.get_int(2, 9);
+    std::vector<Distances> d(m);
+    for(auto& row : d)
+      for(double& v : row) {
+        switch(trial % 3) {
+          case 0: v = rng.get_int(0, 4); break;                                 // coincidences
+          case 1: v = rng.get_double(0, 10); break;                             // generic
+          default: v = 100 + rng.get_double(0, 1e-9) * rng.get_int(0, 3); break; // nearly parallel
+        }
+      }
+    const auto a = LE::compute<CGAL::Gmpq, CGAL::Mpzf>(d);
+    const auto b = LE::compute<CGAL::Gmpq, CGAL::Gmpq>(d);
+    REQUIRE(a.cells.size() == b.cells.size());
+    for(std::size_t c = 0; c < a.cells.size(); ++c) {
+      CHECK(a.cells[c].copy == b.cells[c].copy);
+      CHECK(a.cells[c].edge_label == b.cells[c].edge_label);
+      CHECK(a.cells[c].polygon == b.cells[c].polygon);
+      CHECK(a.cells[c].vertex_feature == b.cells[c].vertex_feature);
+    }
+    REQUIRE(a.segments.size() == b.segments.size());
+    for(std::size_t i = 0; i < a.segments.size(); ++i) {
+      CHECK(a.segments[i].copy_a == b.segments[i].copy_a);
+      CHECK(a.segments[i].copy_b == b.segments[i].copy_b);
+      CHECK(a.segments[i].endpoints == b.segments[i].endpoints);
+    }
+  }
+#else
+  WARN("CGAL::Mpzf is not available here: the clipping runs in the output type");
+#endif
+}
+
 TEST_CASE("lower envelope: bad input is an error", "[lower_envelope]")
 {
   CHECK_THROWS_AS(GR::compute_lower_envelope(std::vector<Distances>{}), GR::Invalid_parameter_error);

@@ -21,6 +21,8 @@
 
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Mpzf.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
 
@@ -340,7 +342,22 @@ namespace lower_envelope {
 template <class FT> struct Computation_type { typedef FT type; };
 template <class ET> struct Computation_type<CGAL::Lazy_exact_nt<ET>> { typedef ET type; };
 
-template <class FT>
+// The ring the clipping runs in. Corners are kept in homogeneous coordinates
+// (cross products of bisector vectors, which are differences of input
+// doubles), so clipping only adds and multiplies; the one division per corner,
+// the normalization, is done at the end in FT. CGAL::Mpzf (a binary float
+// with a multi-limb mantissa, no gcd, no heap for small sizes) does that ring
+// exactly and much faster than Gmpq, which normalizes every result.
+template <class FT> struct Ring_type { typedef FT type; };
+#ifdef CGAL_HAS_MPZF
+template <> struct Ring_type<CGAL::Gmpq> { typedef CGAL::Mpzf type; };
+#endif
+template <class FT, class R> FT ring_to(const R& x) { return FT(x); }
+#ifdef CGAL_HAS_MPZF
+template <> inline CGAL::Gmpq ring_to<CGAL::Gmpq, CGAL::Mpzf>(const CGAL::Mpzf& x) { return static_cast<CGAL::Gmpq>(x); }
+#endif
+
+template <class FT, class R = typename Ring_type<FT>::type>
 Lower_envelope<FT> compute(const std::vector<std::array<double, 3>>& d)
 {
   const std::size_t m = d.size();
@@ -378,10 +395,10 @@ Lower_envelope<FT> compute(const std::vector<std::array<double, 3>>& d)
   const std::size_t n_alive = alive.size();
   std::vector<std::size_t> slot(m, m);
   for(std::size_t s = 0; s < n_alive; ++s) slot[alive[s]] = s;
-  std::vector<std::array<FT, 3>> D(n_alive);
+  std::vector<std::array<R, 3>> D(n_alive);
   for(std::size_t s = 0; s < n_alive; ++s)
-    for(int k = 0; k < 3; ++k) D[s][k] = FT(d[alive[s]][k]);
-  std::vector<std::array<FT, 3>> E(n_alive * n_alive);
+    for(int k = 0; k < 3; ++k) D[s][k] = R(d[alive[s]][k]);
+  std::vector<std::array<R, 3>> E(n_alive * n_alive);
   for(std::size_t a = 0; a < n_alive; ++a)
     for(std::size_t b = a + 1; b < n_alive; ++b)
       for(int k = 0; k < 3; ++k) {
@@ -394,12 +411,12 @@ Lower_envelope<FT> compute(const std::vector<std::array<double, 3>>& d)
   std::sort(cell_order.begin(), cell_order.end());
   for(std::size_t i : cell_order) {
     const std::size_t si = slot[i];
-    auto line_of = [&](std::size_t j) -> const std::array<FT, 3>& { return E[si * n_alive + slot[j]]; };
+    auto line_of = [&](std::size_t j) -> const std::array<R, 3>& { return E[si * n_alive + slot[j]]; };
 
-    std::vector<Vertex<FT>> poly(3);
+    std::vector<Vertex<R>> poly(3);
     for(int k = 0; k < 3; ++k) {
-      poly[k].w = {{FT(0), FT(0), FT(0)}};
-      poly[k].w[k] = FT(1);
+      poly[k].w = {{R(0), R(0), R(0)}};
+      poly[k].w[k] = R(1);
       poly[k].s_sign = 1;
     }
     std::vector<std::size_t> label = {triangle_edge_label(0), triangle_edge_label(1), triangle_edge_label(2)};
@@ -417,7 +434,7 @@ Lower_envelope<FT> compute(const std::vector<std::array<double, 3>>& d)
     for(std::size_t t = 0; t < label.size(); ++t) {
       if(is_triangle_edge_label(label[t])) continue;
       const std::size_t j = label[t];
-      const std::array<FT, 3>& eij = line_of(j);
+      const std::array<R, 3>& eij = line_of(j);
       int c = -1;
       for(int k = 0; k < 3 && c < 0; ++k)
         if(CGAL::is_positive(eij[k])) c = k; // f_i > f_j at corner k: the far side
@@ -435,15 +452,15 @@ Lower_envelope<FT> compute(const std::vector<std::array<double, 3>>& d)
     cell.edge_label = label;
     cell.polygon.reserve(poly.size());
     cell.vertex_feature.reserve(poly.size());
-    for(const Vertex<FT>& v : poly) {
+    for(const Vertex<R>& v : poly) {
       cell.vertex_feature.push_back(feature_of(v.w));
       if constexpr(is_exact<FT>()) {
-        const FT s = v.w[0] + v.w[1] + v.w[2];
+        const FT s = ring_to<FT>(R(v.w[0] + v.w[1] + v.w[2]));
         std::array<FT, 3> lambda;
-        for(int k = 0; k < 3; ++k) lambda[k] = CGAL::is_zero(v.w[k]) ? FT(0) : v.w[k] / s;
+        for(int k = 0; k < 3; ++k) lambda[k] = CGAL::is_zero(v.w[k]) ? FT(0) : ring_to<FT>(v.w[k]) / s;
         cell.polygon.push_back(lambda);
       } else {
-        cell.polygon.push_back(v.w); // already normalized
+        cell.polygon.push_back(v.w); // already normalized (R is FT here)
       }
     }
     if constexpr(!is_exact<FT>()) {
@@ -520,10 +537,12 @@ Lower_envelope<FT> compute(const std::vector<std::array<double, 3>>& d)
 /// \tparam FT the number type of the result. Use an exact one: the default
 ///         `CGAL::Exact_predicates_exact_constructions_kernel::FT` (the clipping
 ///         then runs in its exact type, and the result is converted),
-///         `CGAL::Gmpq`, or `boost::multiprecision::mpq_rational`. Measured
-///         (g++ 12 -O2, solver-like distances), per face: m = 2: 15 / 8 / 7 µs,
-///         m = 4: 32 / 26 / 23 µs, m = 8: 71 / 61 / 58 µs for these three, and
-///         0.5 / 1.3 / 3.2 µs with `double`. `double` works, for comparison
+///         `CGAL::Gmpq` (the clipping then runs in `CGAL::Mpzf`, the
+///         normalization in `Gmpq`), or `boost::multiprecision::mpq_rational`.
+///         Measured (`bench_lower_envelope`, g++ 12 -O2, fields of fronts that
+///         cross in the face), per face, m = 2 / 4 / 8 copies: Epeck FT 5.8 /
+///         11 / 21 µs, `Gmpq` 3.0 / 5.6 / 9.7 µs (4.3 / 8.6 / 16 µs with the
+///         clipping in `Gmpq` too), `double` 0.3 / 0.5 / 0.9 µs. `double` works, for comparison
 ///         only: the result is then approximate, may miss or add tiny cells
 ///         when fields nearly coincide, and features are decided by the exact
 ///         zeros that the construction gives (corners and clipped triangle edges).

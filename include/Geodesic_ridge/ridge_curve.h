@@ -148,21 +148,21 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
   std::vector<std::vector<std::size_t> > cells_of_face(nf);
   std::vector<Lower_envelope<Q> > envelopes(nf);
   regions.assign(nf, {});
+  // one copy: its cell is the whole triangle (most faces; no clipping needed).
+  // Made once: copies of it share the numbers (CGAL::Gmpq is reference counted).
+  Lower_envelope<Q> whole_triangle;
+  {
+    Envelope_cell<Q> cell;
+    cell.copy = 0;
+    cell.polygon = {{{Q(1), Q(0), Q(0)}}, {{Q(0), Q(1), Q(0)}}, {{Q(0), Q(0), Q(1)}}};
+    cell.edge_label = {triangle_edge_label(0), triangle_edge_label(1), triangle_edge_label(2)};
+    whole_triangle.cells.assign(1, cell);
+  }
   for(std::size_t f = 0; f < nf; ++f)
   {
     const Face_copies& fc = face_copies[f];
-    if(fc.fields.size() == 1)
-    {
-      // one copy: its cell is the whole triangle (most faces; no clipping needed)
-      Envelope_cell<Q> cell;
-      cell.copy = 0;
-      cell.polygon = {{{Q(1), Q(0), Q(0)}}, {{Q(0), Q(1), Q(0)}}, {{Q(0), Q(0), Q(1)}}};
-      cell.edge_label = {triangle_edge_label(0), triangle_edge_label(1), triangle_edge_label(2)};
-      envelopes[f].cells.assign(1, cell);
-      envelopes[f].segments.clear();
-    }
-    else
-      envelopes[f] = compute_lower_envelope<Q>(fc.fields);
+    if(fc.fields.size() == 1) envelopes[f] = whole_triangle;
+    else envelopes[f] = compute_lower_envelope<Q>(fc.fields);
     if(fc.copies.size() > 1) ++st.faces_with_several_copies;
     st.surviving_copies += envelopes[f].cells.size();
     for(const auto& c : envelopes[f].cells)
