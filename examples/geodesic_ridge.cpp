@@ -231,6 +231,8 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
      << "    \"core_dual_edges\": " << s.number_of_core_dual_edges << ",\n"
      << "    \"kept_dual_edges\": " << s.number_of_kept_dual_edges << ",\n"
      << "    \"kept_dual_leaves\": " << s.number_of_kept_dual_leaves << ",\n"
+     << "    \"leaf_extension_dual_edges\": " << s.number_of_leaf_extension_edges << ",\n"
+     << "    \"extended_dual_leaves\": " << s.number_of_extended_dual_leaves << ",\n"
      << "    \"cut_edges\": " << s.number_of_cut_edges << ",\n"
      << "    \"cut_vertices\": " << s.number_of_cut_vertices << ",\n"
      << "    \"cut_leaves\": " << s.number_of_cut_leaves << ",\n"

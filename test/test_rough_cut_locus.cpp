@@ -17,6 +17,8 @@
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/subdivision_method_3.h>
 
+#include "support/analytic_meshes.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -302,8 +304,9 @@ void check_rough_cut_locus(const Mesh& m, const RCL& r, double tolerance, int ge
   else if(r.source.kind == Source::ON_EDGE)
     REQUIRE_FALSE(r.is_cut_edge[m.edge(r.source.edge_halfedge).idx()]);
 
-  // no teeth: about one leaf of K per leaf of the kept dual structure
-  REQUIRE(st.number_of_cut_leaves <= st.number_of_kept_dual_leaves + 2);
+  // no teeth: about one leaf of K per leaf of the kept dual structure (with
+  // its leaf extensions)
+  REQUIRE(st.number_of_cut_leaves <= st.number_of_extended_dual_leaves + 2);
 }
 
 } // namespace
@@ -419,10 +422,11 @@ TEST_CASE("leaf extension goes on along one pruned path per kept leaf", "[rough_
     for(double t : {0.005, 0.025, 0.1})
     {
       INFO(name << " tolerance " << t);
-      const RCL plain = Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0),
-                                                                Geodesic_ridge::parameters::tolerance(t));
+      namespace p = Geodesic_ridge::parameters;
+      const RCL plain =
+          Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0), p::tolerance(t, p::leaf_curvature(0)));
       const RCL r = Geodesic_ridge::compute_rough_cut_locus(
-          m, vertex_descriptor(0), Geodesic_ridge::parameters::tolerance(t, Geodesic_ridge::parameters::leaf_extension(0.1)));
+          m, vertex_descriptor(0), p::tolerance(t, p::leaf_extension(0.1, p::leaf_curvature(0))));
       check_rough_cut_locus(m, r, t, genus);
       REQUIRE(plain.leaf_extension_edges.empty());
       REQUIRE(r.kept_dual_edges == plain.kept_dual_edges);
@@ -447,6 +451,68 @@ TEST_CASE("leaf extension goes on along one pruned path per kept leaf", "[rough_
       std::cout << "[rough_cut_locus] " << name << " tolerance " << t << ": " << r.leaf_extension_edges.size()
                 << " leaf extension dual edges, K " << plain.cut_edges.size() << " -> " << r.cut_edges.size()
                 << " edges\n";
+    }
+  }
+}
+
+TEST_CASE("leaf curvature: the cut graph's leaves go on to the corners of convex polyhedra", "[rough_cut_locus]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  namespace T = Geodesic_ridge::testing;
+  struct Case { std::string name; T::Polyhedron_description d; int n; double perturbation; };
+  const std::vector<Case> cases = {{"cube", T::box_corners_and_faces(), 8, 0.0},
+                                   {"cube (perturbed)", T::box_corners_and_faces(), 8, 0.25},
+                                   {"tetrahedron", T::regular_tetrahedron_corners_and_faces(), 10, 0.0}};
+  for(const Case& c : cases)
+  {
+    const unsigned seed = T::test_seed(20261201);
+    const T::Subdivided_polyhedron poly = T::make_subdivided_polyhedron(c.d, c.n, c.perturbation, seed);
+    const Mesh& m = poly.mesh;
+    const double h = T::mean_edge_length(m);
+    const vertex_descriptor s(static_cast<Mesh::size_type>(m.number_of_vertices() / 3));
+    for(double t : {0.025, 0.1})
+    {
+      INFO(c.name << " n " << c.n << " perturbation " << c.perturbation << " seed " << seed << " source " << s
+                  << " tolerance " << t);
+      const RCL plain = Geodesic_ridge::compute_rough_cut_locus(m, s, p::tolerance(t, p::leaf_curvature(0)));
+      const RCL r = Geodesic_ridge::compute_rough_cut_locus(m, s, p::tolerance(t, p::leaf_curvature(45)));
+      check_rough_cut_locus(m, r, t, 0);
+      REQUIRE(plain.leaf_extension_edges.empty());
+      REQUIRE(r.kept_dual_edges == plain.kept_dual_edges);
+      REQUIRE(r.statistics.number_of_leaf_extension_edges == r.leaf_extension_edges.size());
+      for(edge_descriptor e : r.leaf_extension_edges)
+      {
+        REQUIRE(r.edge_role[e.idx()] == Geodesic_ridge::Edge_role::dual_leaf_extension);
+        REQUIRE(r.significance[e.idx()] < t * r.total_area); // pruned edges only
+      }
+      // how far each corner is from K
+      auto corner_distances = [&](const RCL& x) {
+        std::vector<double> out;
+        for(vertex_descriptor corner : poly.corner_vertices)
+        {
+          if(corner == s) continue;
+          double best = 1e300;
+          for(edge_descriptor e : x.cut_edges)
+            for(vertex_descriptor v : {m.source(m.halfedge(e)), m.target(m.halfedge(e))})
+              best = std::min(best, std::sqrt(CGAL::squared_distance(m.point(v), m.point(corner))) / h);
+          out.push_back(best);
+        }
+        return out;
+      };
+      const std::vector<double> before = corner_distances(plain), after = corner_distances(r);
+      std::size_t reached_before = 0, reached_after = 0;
+      double worst_after = 0;
+      for(std::size_t i = 0; i < after.size(); ++i)
+      {
+        reached_before += before[i] <= 1.0;
+        reached_after += after[i] <= 1.0;
+        worst_after = std::max(worst_after, after[i]);
+      }
+      std::cout << "[rough_cut_locus] " << c.name << " tolerance " << t << ": corners within one edge of K "
+                << reached_before << " -> " << reached_after << " of " << after.size() << ", farthest "
+                << worst_after << " mean edges, " << r.leaf_extension_edges.size() << " extension edges\n";
+      CHECK(reached_after >= reached_before);
+      CHECK(reached_after + 1 >= after.size()); // all corners but at most one
     }
   }
 }

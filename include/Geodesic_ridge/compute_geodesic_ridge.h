@@ -323,6 +323,8 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     }
     if(guided) builder.grow_guided(maximum_rings);
     grown = true;
+    // at a cap E is final: no pass to decide on further growth
+    if(predicted && (passes >= maximum_solves || builder.statistics().rings >= maximum_rings)) final_pass = true;
     st.time_extension += seconds_since(t0);
   }
   st.extended_surface = E.statistics;

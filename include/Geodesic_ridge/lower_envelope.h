@@ -455,9 +455,16 @@ Lower_envelope<FT> compute(const std::vector<std::array<double, 3>>& d)
     for(const Vertex<R>& v : poly) {
       cell.vertex_feature.push_back(feature_of(v.w));
       if constexpr(is_exact<FT>()) {
+        // λ = w / (w0 + w1 + w2); the last nonzero coordinate is 1 minus the
+        // others (exact), and a triangle corner needs no arithmetic at all
+        std::array<FT, 3> lambda = {{FT(0), FT(0), FT(0)}};
+        int last = -1;
+        for(int k = 0; k < 3; ++k) if(!CGAL::is_zero(v.w[k])) last = k;
         const FT s = ring_to<FT>(R(v.w[0] + v.w[1] + v.w[2]));
-        std::array<FT, 3> lambda;
-        for(int k = 0; k < 3; ++k) lambda[k] = CGAL::is_zero(v.w[k]) ? FT(0) : ring_to<FT>(v.w[k]) / s;
+        FT rest(1);
+        for(int k = 0; k < last; ++k)
+          if(!CGAL::is_zero(v.w[k])) { lambda[k] = ring_to<FT>(v.w[k]) / s; rest -= lambda[k]; }
+        lambda[last] = rest;
         cell.polygon.push_back(lambda);
       } else {
         cell.polygon.push_back(v.w); // already normalized (R is FT here)

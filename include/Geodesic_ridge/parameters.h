@@ -23,6 +23,8 @@ namespace internal_np {
 struct tolerance_t {};
 /// Tag of the leaf extension of the cut graph (a fraction of the tolerance).
 struct leaf_extension_t {};
+/// Tag of the curvature that draws the cut graph's leaves on (degrees).
+struct leaf_curvature_t {};
 } // namespace internal_np
 
 /// Default significance tolerance, as recommended by the paper (§4.4).
@@ -33,6 +35,14 @@ constexpr double default_tolerance = 0.025;
 /// the corners of the analytic cases but costs precision on real meshes
 /// (knot_3k p95 0.27 -> 0.89 mean edges), through the false tips it adds.
 constexpr double default_leaf_extension = 1.0;
+
+/// Default curvature that draws a leaf of K on (degrees; see
+/// `parameters::leaf_curvature`). Measured (bench_ridge_accuracy, 28 runs on
+/// the meshes of ../shared/data up to 13.3k faces): recall p95 at the default
+/// tolerance improves (bunny_7k v0 2.66 -> 0.26, teddy_3k v0 2.74 -> 0.77,
+/// cheburashka_13k v3334 7.8 -> 3.2 mean edges) at the same precision (p95
+/// 0.04-0.47); 45 reached more corners of the convex test polyhedra than 30.
+constexpr double default_leaf_curvature = 45;
 
 namespace parameters {
 
@@ -64,6 +74,16 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, tolerance)
 /// stops short of the ridge's end misses its end. `f` in [0, 1].
 GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_extension)
 
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// Every pruned branch of the dual tree that hangs from the kept structure
+/// (or from a branch kept this way) and holds at least `degrees` of Gaussian
+/// curvature (2π minus the angle sum, shared among a vertex's faces by angle)
+/// is kept too (default `default_leaf_curvature`; 0 turns it off; it takes
+/// precedence over `leaf_extension`). A leaf of the cut locus of a polyhedral
+/// surface is a vertex of positive curvature: this brings K, and so the ridge,
+/// to the corners and tips that the tolerance cut off.
+GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_curvature)
+
 } // namespace parameters
 
 namespace internal {
@@ -82,6 +102,19 @@ double get_leaf_extension(const NamedParameters& np)
   return f;
 }
 
+
+/// Reads the leaf curvature (degrees) from `np` and checks it.
+template <class NamedParameters>
+double get_leaf_curvature(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double k = choose_parameter(get_parameter(np, internal_np::leaf_curvature_t()), default_leaf_curvature);
+  if(!(k >= 0.0 && k <= 720.0))
+    throw Invalid_parameter_error("leaf curvature " + std::to_string(k) +
+                                  " degrees is out of range: it must be in [0, 720]");
+  return k;
+}
 
 /// Reads the tolerance from `np` (default: `default_tolerance`) and checks it.
 template <class NamedParameters>

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <map>
 #include <set>
 #include <tuple>
@@ -146,10 +147,13 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
   struct Cell { std::size_t face, copy; std::array<double, 3> field; };
   std::vector<Cell> cells;
   std::vector<std::vector<std::size_t> > cells_of_face(nf);
-  std::vector<Lower_envelope<Q> > envelopes(nf);
+  // per face: its envelope, either the shared whole-triangle one or one of
+  // `computed` (a deque: pointers into it stay valid as it grows)
+  std::vector<const Lower_envelope<Q>*> envelope_of(nf, nullptr);
+  std::deque<Lower_envelope<Q> > computed;
   regions.assign(nf, {});
-  // one copy: its cell is the whole triangle (most faces; no clipping needed).
-  // Made once: copies of it share the numbers (CGAL::Gmpq is reference counted).
+  // one copy: its cell is the whole triangle (most faces; no clipping needed),
+  // made once and shared.
   Lower_envelope<Q> whole_triangle;
   {
     Envelope_cell<Q> cell;
@@ -161,11 +165,15 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
   for(std::size_t f = 0; f < nf; ++f)
   {
     const Face_copies& fc = face_copies[f];
-    if(fc.fields.size() == 1) envelopes[f] = whole_triangle;
-    else envelopes[f] = compute_lower_envelope<Q>(fc.fields);
+    if(fc.fields.size() == 1) envelope_of[f] = &whole_triangle;
+    else
+    {
+      computed.push_back(compute_lower_envelope<Q>(fc.fields));
+      envelope_of[f] = &computed.back();
+    }
     if(fc.copies.size() > 1) ++st.faces_with_several_copies;
-    st.surviving_copies += envelopes[f].cells.size();
-    for(const auto& c : envelopes[f].cells)
+    st.surviving_copies += envelope_of[f]->cells.size();
+    for(const auto& c : envelope_of[f]->cells)
     {
       cells_of_face[f].push_back(cells.size());
       cells.push_back(Cell{f, fc.copies[c.copy], fc.fields[c.copy]});
@@ -178,8 +186,8 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
     }
   }
   auto cell_of = [&](std::size_t f, std::size_t local_copy) {
-    for(std::size_t i = 0; i < envelopes[f].cells.size(); ++i)
-      if(envelopes[f].cells[i].copy == local_copy) return cells_of_face[f][i];
+    for(std::size_t i = 0; i < envelope_of[f]->cells.size(); ++i)
+      if(envelope_of[f]->cells[i].copy == local_copy) return cells_of_face[f][i];
     return std::size_t(-1);
   };
 
@@ -231,7 +239,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
   for(std::size_t f = 0; f < nf; ++f)
   {
     const auto cp = corner_points(f);
-    for(const auto& s : envelopes[f].segments)
+    for(const auto& s : envelope_of[f]->segments)
     {
       const std::size_t ca = cell_of(f, s.copy_a), cb = cell_of(f, s.copy_b);
       if(same_field(cells[ca].field, cells[cb].field)) { fronts.unite(ca, cb); continue; }
@@ -265,7 +273,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       while(h2s[k2] != h2) ++k2;
       // most edges: one cell on either side, glued in E across this edge (one
       // sheet), so one front and no exact arithmetic
-      if(envelopes[f1].cells.size() == 1 && envelopes[f2].cells.size() == 1)
+      if(envelope_of[f1]->cells.size() == 1 && envelope_of[f2]->cells.size() == 1)
       {
         const std::size_t c1 = cells_of_face[f1][0], c2 = cells_of_face[f2][0];
         const auto& em = E.mesh;
@@ -279,9 +287,9 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       struct Interval { Q lo, hi; std::size_t cell; };
       auto intervals = [&](std::size_t f, int k, bool reversed) {
         std::vector<Interval> out;
-        for(std::size_t i = 0; i < envelopes[f].cells.size(); ++i)
+        for(std::size_t i = 0; i < envelope_of[f]->cells.size(); ++i)
         {
-          const auto& c = envelopes[f].cells[i];
+          const auto& c = envelope_of[f]->cells[i];
           const std::size_t n = c.polygon.size();
           for(std::size_t j = 0; j < n; ++j)
             if(is_triangle_edge_label(c.edge_label[j]) && triangle_edge_of_label(c.edge_label[j]) == k)

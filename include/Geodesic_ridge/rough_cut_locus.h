@@ -56,6 +56,7 @@ struct Rough_cut_locus_statistics
   std::size_t number_of_core_dual_edges = 0; ///< dual edges on the 2-core (significance = total area)
   std::size_t number_of_kept_dual_edges = 0;
   std::size_t number_of_kept_dual_leaves = 0; ///< faces with exactly one kept dual edge
+  std::size_t number_of_extended_dual_leaves = 0; ///< same, with the leaf extension edges too
   std::size_t number_of_leaf_extension_edges = 0; ///< pruned dual edges added to extend kept leaves
   std::size_t number_of_cut_edges = 0;        ///< |K|
   std::size_t number_of_cut_vertices = 0;
@@ -317,6 +318,45 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   // separates the faces accumulated in it from the rest. What is never peeled
   // is the 2-core (the non-contractible cycles and the paths joining them).
   const std::size_t none = std::numeric_limits<std::size_t>::max();
+  // Gaussian curvature (2π − angle sum) of every vertex, shared among its
+  // faces by angle, accumulated per branch of T* like the area: the leaf
+  // curvature extension (below) follows it.
+  const double leaf_curvature = get_leaf_curvature(np) * 3.14159265358979323846 / 180.0;
+  std::vector<double> curvature_share;
+  if(leaf_curvature > 0)
+  {
+    std::vector<std::array<double, 3> > angle(nf);
+    std::vector<double> angle_sum(nv, 0.0);
+    for(face_descriptor f : faces(tm))
+    {
+      const halfedge_descriptor h0 = halfedge(f, tm);
+      const std::array<halfedge_descriptor, 3> h = {{h0, next(h0, tm), next(next(h0, tm), tm)}};
+      for(int k = 0; k < 3; ++k)
+      {
+        // the angle at target(h[k]), between the edges to source(h[k]) and target(h[k+1])
+        const auto& o = get(vpm, target(h[k], tm));
+        const auto& a = get(vpm, source(h[k], tm));
+        const auto& b = get(vpm, target(h[(k + 1) % 3], tm));
+        const double ux = a.x() - o.x(), uy = a.y() - o.y(), uz = a.z() - o.z();
+        const double vx = b.x() - o.x(), vy = b.y() - o.y(), vz = b.z() - o.z();
+        const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+        angle[fi(f)][k] = std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz);
+        angle_sum[vi(target(h[k], tm))] += angle[fi(f)][k];
+      }
+    }
+    curvature_share.assign(nf, 0.0);
+    for(face_descriptor f : faces(tm))
+    {
+      const halfedge_descriptor h0 = halfedge(f, tm);
+      const std::array<halfedge_descriptor, 3> h = {{h0, next(h0, tm), next(next(h0, tm), tm)}};
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t v = vi(target(h[k], tm));
+        curvature_share[fi(f)] += (2 * 3.14159265358979323846 - angle_sum[v]) * angle[fi(f)][k] / angle_sum[v];
+      }
+    }
+  }
+  std::vector<double> branch_curvature(curvature_share), subtree_curvature(leaf_curvature > 0 ? nd : 0, 0.0);
   std::vector<double> accumulated(area);
   std::vector<unsigned char> degree(dual_degree);
   std::vector<char> peeled(nd, 0);
@@ -339,6 +379,11 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     r.significance[ei(r.dual_edges[d])] = (std::min)(side, node_total - side);
     const std::size_t p = dual_faces_of[d][0] == f ? dual_faces_of[d][1] : dual_faces_of[d][0];
     accumulated[p] += side;
+    if(leaf_curvature > 0)
+    {
+      subtree_curvature[d] = branch_curvature[f];
+      branch_curvature[p] += branch_curvature[f];
+    }
     degree[f] = 0;
     if(--degree[p] == 1) queue.push_back(p);
   }
@@ -378,15 +423,51 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     }
   for(std::size_t f = 0; f < nf; ++f) st.number_of_kept_dual_leaves += (kept_degree[f] == 1);
 
-  // 3-. Leaf extension: from every leaf face of the kept structure, go on into
-  //     its most significant pruned child branch while that is significant
-  //     enough (one path per leaf). The ridge shows only where K cuts: beyond
-  //     K's end, the disk's copy of a face carries the smaller of the two
-  //     fronts at its corners and dominates every other copy.
+  // 3-. Extensions of the kept structure into pruned branches. The ridge
+  //     shows only where K cuts: beyond K's end, the disk's copy of a face
+  //     carries the smaller of the two fronts at its corners and dominates
+  //     every other copy. The leaves of the cut locus of a polyhedral surface
+  //     are vertices of positive curvature:
+  //     * leaf_curvature: every pruned branch that holds at least that much
+  //       Gaussian curvature is kept, outwards from the kept structure (paths
+  //       to the curvature, branching only where two branches both hold enough);
+  //     * else leaf_extension: from every leaf face of the kept structure, go
+  //       on into its most significant pruned child branch while that is
+  //       significant enough (one path per leaf).
   std::vector<char> extension(nd, 0);
   const double leaf_extension = get_leaf_extension(np);
   const double extension_threshold = leaf_extension * threshold;
-  if(!st.fallback_single_rung && leaf_extension < 1)
+  if(!st.fallback_single_rung && leaf_curvature > 0)
+  {
+    // every pruned branch hanging from the kept structure (or from a branch
+    // added here) that holds at least `leaf_curvature` of curvature: from the
+    // core outwards (reverse peeling order), so a branch's parent is decided first
+    // (with hysteresis: an added branch goes on into its child branch of most
+    // curvature while that holds a quarter of it, so that it reaches the
+    // vertex whose curvature its last faces share)
+    auto parent_of = [&](std::size_t d) {
+      return dual_faces_of[d][0] == child_face[d] ? dual_faces_of[d][1] : dual_faces_of[d][0];
+    };
+    std::vector<std::size_t> best_child(nf, none);
+    for(std::size_t d : peel_order)
+    {
+      const std::size_t p = parent_of(d);
+      if(best_child[p] == none || subtree_curvature[d] > subtree_curvature[best_child[p]]) best_child[p] = d;
+    }
+    std::vector<char> inside(nf, 0); // 1 kept, 2 reached by an extension
+    for(std::size_t f = 0; f < nf; ++f) inside[f] = kept_degree[f] > 0 ? 1 : 0;
+    for(auto it = peel_order.rbegin(); it != peel_order.rend(); ++it)
+    {
+      const std::size_t d = *it;
+      const std::size_t p = parent_of(d);
+      if(kept[d] || !inside[p]) continue;
+      const bool goes_on = inside[p] == 2 && best_child[p] == d && subtree_curvature[d] >= 0.25 * leaf_curvature;
+      if(!goes_on && subtree_curvature[d] < leaf_curvature) continue;
+      extension[d] = 1;
+      inside[child_face[d]] = 2;
+    }
+  }
+  else if(!st.fallback_single_rung && leaf_extension < 1)
     for(std::size_t f = 0; f < nf; ++f)
     {
       if(kept_degree[f] != 1) continue;
@@ -405,6 +486,16 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
         cur = child_face[best];
       }
     }
+  {
+    std::vector<unsigned char> degree_with_extension(kept_degree);
+    for(std::size_t d = 0; d < nd; ++d)
+      if(extension[d])
+      {
+        ++degree_with_extension[dual_faces_of[d][0]];
+        ++degree_with_extension[dual_faces_of[d][1]];
+      }
+    for(std::size_t f = 0; f < nf; ++f) st.number_of_extended_dual_leaves += (degree_with_extension[f] == 1);
+  }
   for(std::size_t d = 0; d < nd; ++d)
     if(extension[d])
     {
