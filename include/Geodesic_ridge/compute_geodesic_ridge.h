@@ -331,7 +331,13 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 
   // Stage 2c + 3: exact envelopes and the ridge curve
   t0 = std::chrono::steady_clock::now();
-  assemble_ridge_curve(tm, E, face_copies, mean_edge, minimum_angle, vpm, vim, fim, eim, result.polylines,
+  std::vector<std::size_t> cut_leaves;
+  {
+    std::vector<int> degree(num_vertices(tm), 0);
+    for(auto e : rcl.cut_edges) { ++degree[get(vim, source(e, tm))]; ++degree[get(vim, target(e, tm))]; }
+    for(std::size_t v = 0; v < degree.size(); ++v) if(degree[v] == 1) cut_leaves.push_back(v);
+  }
+  assemble_ridge_curve(tm, E, face_copies, mean_edge, minimum_angle, cut_leaves, vpm, vim, fim, eim, result.polylines,
                        result.regions, st.ridge);
   st.time_assembly = seconds_since(t0);
   st.ridge.time = st.time_assembly;

@@ -64,7 +64,8 @@ struct Ridge_curve_statistics
   std::size_t rejoined_segments = 0;      ///< merged segments put back to join two pieces of the ridge
   std::size_t dropped_components = 0;     ///< detached pieces dropped
   std::size_t pruned_spur_segments = 0;   ///< free-end segments with a gradient jump below the minimum angle
-  std::size_t pruned_flat_end_segments = 0; ///< free-end segments with no positive curvature near their end
+  std::size_t pruned_flat_end_segments = 0;
+  std::size_t pruned_slit_end_segments = 0; ///< flat free ends near a leaf of K (see ridge_curve.h) ///< free-end segments with no positive curvature near their end
   std::size_t ridge_segments = 0, junctions = 0, free_ends = 0, components = 0, cycles = 0;
   double total_length = 0;
   double time = 0;
@@ -112,7 +113,7 @@ template <class TriangleMesh, class Point, class VertexPointMap, class VertexInd
           class FaceIndexMap, class EdgeIndexMap>
 void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>& E,
                           const std::vector<Face_copies>& face_copies, double mean_edge,
-                          double minimum_angle,
+                          double minimum_angle, const std::vector<std::size_t>& cut_leaves,
                           VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim,
                           std::vector<std::vector<Ridge_point<Point> > >& polylines,
                           std::vector<std::vector<Ridge_region_cell> >& regions,
@@ -473,6 +474,17 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       }
       return total;
     };
+    // A flat free end within one mean edge of a leaf of K is where the ridge
+    // went on past the end of the slit: there the disk's copy wraps around the
+    // slit's end and the ridge inside it is not found (see the manual); what
+    // remains near the slit's end is a hook between inexact copies.
+    auto near_cut_leaf = [&](std::size_t node) {
+      const Point& p = nodes[node].point;
+      for(std::size_t l : cut_leaves)
+        if(CGAL::to_double(CGAL::squared_distance(get(vpm, vertex_of[l]), p)) <= CGAL::square(1.0 * mean_edge))
+          return true;
+      return false;
+    };
     std::vector<std::vector<std::size_t> > at(nodes.size());
     std::vector<std::size_t> live(nodes.size(), 0);
     for(std::size_t i = 0; i < segments.size(); ++i)
@@ -492,10 +504,12 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       for(std::size_t i : at[v]) if(segments[i].ridge) { seg = i; break; }
       if(seg == std::size_t(-1)) continue;
       const bool weak = segments[seg].angle < minimum_angle;
-      const bool flat_end = !weak && segments[seg].angle < 3 * minimum_angle && curvature_near(v) < minimum_curvature;
-      if(!weak && !flat_end) continue;
+      const bool flat = !weak && curvature_near(v) < minimum_curvature;
+      const bool flat_end = flat && segments[seg].angle < 3 * minimum_angle;
+      const bool slit_end = flat && !flat_end && near_cut_leaf(v);
+      if(!weak && !flat_end && !slit_end) continue;
       segments[seg].ridge = false;
-      ++(weak ? st.pruned_spur_segments : st.pruned_flat_end_segments);
+      ++(weak ? st.pruned_spur_segments : (flat_end ? st.pruned_flat_end_segments : st.pruned_slit_end_segments));
       --live[v];
       const std::size_t w = segments[seg].a == v ? segments[seg].b : segments[seg].a;
       if(--live[w] == 1) leaves.push_back(w);
