@@ -281,11 +281,14 @@ Square_measure measure_square(const Doubly_covered_square& sq, const Result& rc,
 // edges, each sample within 0.5 mean edges of the computed ridge (3D distance
 // to its segments; both sheets lie in z = 0, and top-sheet segments are
 // already charged by the precision check).
-// KNOWN FAILURE, tracked in the issue of the ridge curve: on coarse regular
-// grids at small tolerances, false branches of the rough cut (Dijkstra's dual
-// is anisotropic; the tree on exact distances helps but does not remove them)
-// leave spurious ridge pieces, and branches that the tolerance prunes from K
-// are missing. The checks run and print their numbers; [!mayfail] keeps them
+// KNOWN FAILURE, tracked in the issue of the ridge curve: on these coarse
+// grids (10-16 cells a side) the ridge follows the analytic branches in their
+// middle, but where a branch of K ends short of its corner the ridge's last
+// mean edge or so hooks off, and false branches of K at tolerance 0.01 leave
+// spurious pieces. Measured (2026-12-01, curvature branches and slit-end
+// pruning on): ridge -> analytic max 0.8-3.1 mean edges (sum over the 32
+// cases 44.8; 55.3 without them), analytic -> ridge max 0.7-2.5 (sum 39.0;
+// 56.9). The checks run and print their numbers; [!mayfail] keeps them
 // visible in every run without failing CI until the algorithm meets them.
 TEST_CASE("doubly covered square: the ridge is the Voronoi diagram of the mirror images", "[ridge_curve][!mayfail]")
 {
@@ -329,15 +332,7 @@ TEST_CASE("doubly covered square: the ridge is the Voronoi diagram of the mirror
                  << " regions " << st.regions_before_merge << " dropped " << st.dropped_components;
         INFO(measured.str());
         std::cout << "[ridge_curve] " << what.str() << ": " << measured.str() << "\n";
-        // KNOWN FAILURE (reported, 2026): on these flat grids the rough cut
-        // locus keeps significant zigzag branches of the Dijkstra tree's dual
-        // far from the true cut locus (both sheets). Each such slit leaves the
-        // face copies on its two sides shadowed at different corners (one copy
-        // ~0.25 mean edges too long at the slit's vertices, the other at the
-        // far corner): neither dominates, and their envelope boundary is
-        // output as ridge, a spurious branch parallel to the slit (max 2.5-6
-        // mean edges from the analytic locus, also on the top sheet). Some
-        // true branches are dropped (detached from the main component).
+        // KNOWN FAILURE (reported): see above.
         CHECK(r.top_points == 0);
         CHECK(r.max_error <= precision_radius);
         CHECK(r.max_miss <= coverage_radius);
@@ -349,12 +344,12 @@ TEST_CASE("doubly covered square: the ridge is the Voronoi diagram of the mirror
 // locus, so the ridge must come within about one mean edge of it (we allow
 // 1.5 mean edges, 3D distance from the corner to the ridge segments), at a
 // small and at the default tolerance. The ridge is a tree.
-// KNOWN FAILURE, tracked in the issue of the ridge curve: on coarse regular
-// grids at small tolerances, false branches of the rough cut (Dijkstra's dual
-// is anisotropic; the tree on exact distances helps but does not remove them)
-// leave spurious ridge pieces, and branches that the tolerance prunes from K
-// are missing. The checks run and print their numbers; [!mayfail] keeps them
-// visible in every run without failing CI until the algorithm meets them.
+// KNOWN FAILURE, tracked in the issue of the ridge curve: K now reaches the
+// corners (curvature branches, see test_rough_cut_locus.cpp), but the ridge
+// stops short of some: measured farthest corner 0.02-3.4 mean edges at
+// tolerance 0.025 (14 of 18 runs within 1.5), 0.4-4.3 at 0.005 (9 of 18).
+// The checks run and print their numbers; [!mayfail] keeps them visible in
+// every run without failing CI until the algorithm meets them.
 TEST_CASE("convex polyhedra: the ridge reaches every corner", "[ridge_curve][!mayfail]")
 {
   struct Case { std::string name; Polyhedron_description p; int n; double perturbation; unsigned seed; };
@@ -405,8 +400,8 @@ TEST_CASE("convex polyhedra: the ridge reaches every corner", "[ridge_curve][!ma
         const double d = distance_to_ridge(m.point(corner), rc->polylines) / h;
         worst = std::max(worst, d);
         INFO("corner " << corner << " (" << m.point(corner) << "): distance to the ridge " << d << " mean edges");
-        // KNOWN FAILURE (reported): up to 4.6 mean edges at tolerance 0.005 and
-        // 7.1 at 0.025 on the regular cube, tetrahedron and octahedron.
+        // KNOWN FAILURE (reported): up to 4.3 mean edges at tolerance 0.005 and
+        // 3.4 at 0.025 (7.1 before the curvature branches).
         CHECK(d <= corner_radius);
       }
       const auto& st = rc->statistics.ridge;
