@@ -426,6 +426,13 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
   {
     const double pi = 3.14159265358979323846;
     const double minimum_curvature = 0.5 * minimum_angle * pi / 180;
+    // A weak free end with at least this much curvature around it (a cube's
+    // corner has 90 degrees) ends where the cut locus must: at a vertex of
+    // positive curvature. It is kept: its position is ill-conditioned, but the
+    // branch is real. Measured (bench_ridge_accuracy): bunny_1k v0 recall p95
+    // 2.38 -> 0.75 mean edges, precision p95 0.27 -> 0.44; the convex test
+    // polyhedra reach 8 more corners.
+    const double corner_curvature = 60 * pi / 180;
     const std::size_t nv = num_vertices(tm);
     std::vector<typename GT::vertex_descriptor> vertex_of(nv);
     for(auto v : vertices(tm)) vertex_of[get(vim, v)] = v;
@@ -503,8 +510,10 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       std::size_t seg = std::size_t(-1);
       for(std::size_t i : at[v]) if(segments[i].ridge) { seg = i; break; }
       if(seg == std::size_t(-1)) continue;
-      const bool weak = segments[seg].angle < minimum_angle;
-      const bool flat = !weak && curvature_near(v) < minimum_curvature;
+      const double curvature_here = curvature_near(v);
+      // a weak end at a corner (curvature like that of a cube's) is a real leaf
+      const bool weak = segments[seg].angle < minimum_angle && curvature_here < corner_curvature;
+      const bool flat = !weak && curvature_here < minimum_curvature;
       const bool flat_end = flat && segments[seg].angle < 3 * minimum_angle;
       const bool slit_end = flat && !flat_end && near_cut_leaf(v);
       if(!weak && !flat_end && !slit_end) continue;
