@@ -517,6 +517,16 @@ TEST_CASE("leaf curvature: the cut graph's leaves go on to the corners of convex
   }
 }
 
+TEST_CASE("leaf curvature out of range is an error", "[rough_cut_locus]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  const Mesh m = load("torus_1k.off");
+  for(double bad : {-1.0, 721.0, std::nan("")})
+    REQUIRE_THROWS_AS(Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0), p::leaf_curvature(bad)),
+                      Geodesic_ridge::Invalid_parameter_error);
+  REQUIRE_NOTHROW(Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0), p::leaf_curvature(0)));
+}
+
 TEST_CASE("convex polyhedra and generated meshes", "[rough_cut_locus]")
 {
   // A subdivided icosahedron (sphere) and a subdivided, perturbed cube.

@@ -88,46 +88,41 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_curvature)
 
 namespace internal {
 
+/// Reads the number parameter `Tag` from `np` (default `default_value`) and
+/// checks that it is in [lo, hi] (or [lo, hi) if `open_above`; NaN never is):
+/// `Invalid_parameter_error` names the parameter and the range otherwise.
+template <class Tag, class NamedParameters>
+double get_number_in_range(const NamedParameters& np, double default_value, double lo, double hi,
+                           bool open_above, const std::string& what, const std::string& range)
+{
+  const double x = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, Tag()), default_value);
+  if(!(x >= lo && (open_above ? x < hi : x <= hi)))
+    throw Invalid_parameter_error(what + " " + std::to_string(x) + " is out of range: it must be in " + range);
+  return x;
+}
+
 /// Reads the leaf extension from `np` and checks it.
 template <class NamedParameters>
 double get_leaf_extension(const NamedParameters& np)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const double f = choose_parameter(get_parameter(np, internal_np::leaf_extension_t()),
-                                    default_leaf_extension);
-  if(!(f >= 0.0 && f <= 1.0))
-    throw Invalid_parameter_error("leaf extension " + std::to_string(f) +
-                                  " is out of range: it must be in [0, 1]");
-  return f;
+  return get_number_in_range<internal_np::leaf_extension_t>(np, default_leaf_extension, 0, 1, false,
+                                                            "leaf extension", "[0, 1]");
 }
-
 
 /// Reads the leaf curvature (degrees) from `np` and checks it.
 template <class NamedParameters>
 double get_leaf_curvature(const NamedParameters& np)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const double k = choose_parameter(get_parameter(np, internal_np::leaf_curvature_t()), default_leaf_curvature);
-  if(!(k >= 0.0 && k <= 720.0))
-    throw Invalid_parameter_error("leaf curvature " + std::to_string(k) +
-                                  " degrees is out of range: it must be in [0, 720]");
-  return k;
+  return get_number_in_range<internal_np::leaf_curvature_t>(np, default_leaf_curvature, 0, 720, false,
+                                                            "leaf curvature (degrees)", "[0, 720]");
 }
 
 /// Reads the tolerance from `np` (default: `default_tolerance`) and checks it.
 template <class NamedParameters>
 double get_tolerance(const NamedParameters& np)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const double t = choose_parameter(get_parameter(np, internal_np::tolerance_t()),
-                                    default_tolerance);
-  if(!(t >= 0.0 && t < 0.5)) // also rejects NaN
-    throw Invalid_parameter_error("tolerance " + std::to_string(t) +
-                                  " is out of range: it must be in [0, 0.5)");
-  return t;
+  return get_number_in_range<internal_np::tolerance_t>(np, default_tolerance, 0, 0.5, true, "tolerance",
+                                                       "[0, 0.5)");
 }
 
 } // namespace internal

@@ -13,6 +13,7 @@
 #define GEODESIC_RIDGE_RIDGE_CURVE_H
 
 #include <Geodesic_ridge/extended_surface.h>
+#include <Geodesic_ridge/internal/corner_angles.h>
 #include <Geodesic_ridge/internal/graph_polylines.h>
 #include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/lower_envelope.h>
@@ -436,23 +437,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
     const std::size_t nv = num_vertices(tm);
     std::vector<typename GT::vertex_descriptor> vertex_of(nv);
     for(auto v : vertices(tm)) vertex_of[get(vim, v)] = v;
-    std::vector<double> curvature(nv, 2 * pi);
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      const auto h = corner_halfedges(f);
-      const auto p = corner_points(f);
-      for(int k = 0; k < 3; ++k)
-      {
-        const Point& a = p[k]; const Point& b = p[(k + 1) % 3]; const Point& c = p[(k + 2) % 3];
-        const double ux = CGAL::to_double(b.x() - a.x()), uy = CGAL::to_double(b.y() - a.y()),
-                     uz = CGAL::to_double(b.z() - a.z());
-        const double vx = CGAL::to_double(c.x() - a.x()), vy = CGAL::to_double(c.y() - a.y()),
-                     vz = CGAL::to_double(c.z() - a.z());
-        const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-        curvature[get(vim, source(h[k], tm))] -=
-            std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz);
-      }
-    }
+    const Corner_angles angles = corner_angles(tm, vpm, vim, fim);
     // total curvature of the vertices within `radius` of a node (grown from its face's corners)
     const double radius = 2.5 * mean_edge;
     std::vector<std::size_t> seen_at(nv, std::size_t(-1));
@@ -463,7 +448,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       for(const auto h : corner_halfedges(nodes[node].face))
       {
         const std::size_t v = get(vim, source(h, tm));
-        if(seen_at[v] != node) { seen_at[v] = node; stack.push_back(v); total += curvature[v]; }
+        if(seen_at[v] != node) { seen_at[v] = node; stack.push_back(v); total += angles.curvature(v); }
       }
       while(!stack.empty())
       {
@@ -475,7 +460,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
           if(seen_at[w] == node) continue;
           seen_at[w] = node;
           if(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, vertex_of[w]), p))) > radius) continue;
-          total += curvature[w];
+          total += angles.curvature(w);
           stack.push_back(w);
         }
       }

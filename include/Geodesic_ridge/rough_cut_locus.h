@@ -10,6 +10,7 @@
 #define GEODESIC_RIDGE_ROUGH_CUT_LOCUS_H
 
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/corner_angles.h>
 #include <Geodesic_ridge/internal/graph_polylines.h>
 #include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/mesh_validation.h>
@@ -325,34 +326,15 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   std::vector<double> curvature_share;
   if(leaf_curvature > 0)
   {
-    std::vector<std::array<double, 3> > angle(nf);
-    std::vector<double> angle_sum(nv, 0.0);
-    for(face_descriptor f : faces(tm))
-    {
-      const halfedge_descriptor h0 = halfedge(f, tm);
-      const std::array<halfedge_descriptor, 3> h = {{h0, next(h0, tm), next(next(h0, tm), tm)}};
-      for(int k = 0; k < 3; ++k)
-      {
-        // the angle at target(h[k]), between the edges to source(h[k]) and target(h[k+1])
-        const auto& o = get(vpm, target(h[k], tm));
-        const auto& a = get(vpm, source(h[k], tm));
-        const auto& b = get(vpm, target(h[(k + 1) % 3], tm));
-        const double ux = a.x() - o.x(), uy = a.y() - o.y(), uz = a.z() - o.z();
-        const double vx = b.x() - o.x(), vy = b.y() - o.y(), vz = b.z() - o.z();
-        const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-        angle[fi(f)][k] = std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz);
-        angle_sum[vi(target(h[k], tm))] += angle[fi(f)][k];
-      }
-    }
+    const Corner_angles angles = corner_angles(tm, vpm, vim, fim);
     curvature_share.assign(nf, 0.0);
     for(face_descriptor f : faces(tm))
     {
-      const halfedge_descriptor h0 = halfedge(f, tm);
-      const std::array<halfedge_descriptor, 3> h = {{h0, next(h0, tm), next(next(h0, tm), tm)}};
-      for(int k = 0; k < 3; ++k)
+      halfedge_descriptor h = halfedge(f, tm);
+      for(int k = 0; k < 3; ++k, h = next(h, tm))
       {
-        const std::size_t v = vi(target(h[k], tm));
-        curvature_share[fi(f)] += (2 * 3.14159265358979323846 - angle_sum[v]) * angle[fi(f)][k] / angle_sum[v];
+        const std::size_t v = vi(source(h, tm));
+        curvature_share[fi(f)] += angles.curvature(v) * angles.angle[fi(f)][k] / angles.angle_sum[v];
       }
     }
   }

@@ -7,6 +7,8 @@
 #ifndef GEODESIC_RIDGE_SOLVERS_FAST_MARCHING_SOLVER_H
 #define GEODESIC_RIDGE_SOLVERS_FAST_MARCHING_SOLVER_H
 
+#include <Geodesic_ridge/source.h>
+
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -120,10 +122,11 @@ void fast_marching_distances(const TriangleMesh& tm, const VertexPointMap& vpm, 
 } // namespace internal
 
 /// \ingroup PkgGeodesicRidgeSolvers
-/// Model of `GeodesicSolver`: first-order fast marching (Kimmel & Sethian),
-/// with the planar-front update across every triangle whose upwind ray crosses
-/// the opposite edge and edge paths elsewhere (obtuse triangles are not
-/// unfolded). Much cheaper than the exact solver; errors of the order of the
+/// Model of `GeodesicSolver`: first-order fast marching (Kimmel & Sethian).
+/// The update across a triangle takes a circular front (a virtual point source
+/// below the known edge, at the two known distances) where its ray to the
+/// third corner crosses that edge, else a planar front, else the edge paths
+/// (obtuse triangles are not unfolded). Much cheaper than the exact solver; errors of the order of the
 /// edge length near the source. The pipeline uses it to shape the tree of
 /// stage 1 (only the direction of descent matters there).
 struct Fast_marching_solver
@@ -134,9 +137,7 @@ struct Fast_marching_solver
   void operator()(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor s,
                   VertexDistanceMap distance) const
   {
-    const std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double> > seeds = {
-        {s, 0.0}};
-    run(tm, seeds, distance);
+    run(tm, make_source(tm, s, CGAL::parameters::default_values()).seeds, distance);
   }
 
   template <class TriangleMesh, class FT, class VertexDistanceMap>
@@ -145,28 +146,9 @@ struct Fast_marching_solver
                                   std::array<FT, 3> >& loc,
                   VertexDistanceMap distance) const
   {
-    // the corners start at their straight-line distances from the point
-    const auto vpm = get(CGAL::vertex_point, tm);
-    const auto h = halfedge(loc.first, tm);
-    const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3> c = {
-        {source(h, tm), target(h, tm), target(next(h, tm), tm)}};
-    double x[3] = {0, 0, 0};
-    for(int k = 0; k < 3; ++k)
-    {
-      const auto& q = get(vpm, c[k]);
-      const double w = CGAL::to_double(loc.second[k]);
-      x[0] += w * CGAL::to_double(q.x());
-      x[1] += w * CGAL::to_double(q.y());
-      x[2] += w * CGAL::to_double(q.z());
-    }
-    std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double> > seeds;
-    for(int k = 0; k < 3; ++k)
-    {
-      const auto& q = get(vpm, c[k]);
-      const double dx = CGAL::to_double(q.x()) - x[0], dy = CGAL::to_double(q.y()) - x[1],
-                   dz = CGAL::to_double(q.z()) - x[2];
-      seeds.push_back({c[k], std::sqrt(dx * dx + dy * dy + dz * dz)});
-    }
+    // the corners start at their straight-line distances from the point (a
+    // point on an edge or at a vertex seeds that feature's neighbourhood)
+    const auto seeds = make_source(tm, loc, CGAL::parameters::default_values()).seeds;
     run(tm, seeds, distance);
   }
 
