@@ -216,19 +216,12 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 
     t0 = std::chrono::steady_clock::now();
     std::vector<double> distance(E.mesh.number_of_vertices());
-    if(final_pass)
-    {
-      if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance));
-      else solver(E.mesh, E.source_location, CGAL::make_property_map(distance));
-      ++st.solves;
-    }
-    else
-    {
-      const Fast_marching_solver fmm;
-      if(E.source_is_vertex) fmm(E.mesh, E.source_vertex, CGAL::make_property_map(distance));
-      else fmm(E.mesh, E.source_location, CGAL::make_property_map(distance));
-      ++st.predicted_passes;
-    }
+    auto solve_on_E = [&](const auto& geodesic_solver) {
+      if(E.source_is_vertex) geodesic_solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance));
+      else geodesic_solver(E.mesh, E.source_location, CGAL::make_property_map(distance));
+    };
+    if(final_pass) { solve_on_E(solver); ++st.solves; }
+    else { solve_on_E(Fast_marching_solver()); ++st.predicted_passes; }
     ++passes;
     st.time_solve += seconds_since(t0);
     if(E.source_is_vertex && distance[E.source_vertex] != 0)
