@@ -25,6 +25,7 @@
 #include <deque>
 #include <filesystem>
 #include <iostream>
+#include <array>
 #include <map>
 #include <sstream>
 #include <set>
@@ -213,7 +214,8 @@ void check_rough_cut_locus(const Mesh& m, const RCL& r, double tolerance, int ge
   REQUIRE(r.dual_edges.size() == m.number_of_faces() - r.source.faces.size() - 1 + 2 * genus);
 
   // pruning by significance
-  std::size_t kept = 0, wrongly_kept = 0, wrongly_pruned = 0;
+  // (a false branch is significant, but pruned for the curvature it encloses)
+  std::size_t kept = 0, false_branch = 0, wrongly_kept = 0, wrongly_pruned = 0;
   for(edge_descriptor e : r.dual_edges)
   {
     const double I = r.significance[e.idx()];
@@ -222,13 +224,19 @@ void check_rough_cut_locus(const Mesh& m, const RCL& r, double tolerance, int ge
       ++kept;
       wrongly_kept += !st.fallback_single_rung && !(I >= tolerance * r.total_area);
     }
+    else if(r.edge_role[e.idx()] == Geodesic_ridge::Edge_role::dual_false_branch)
+    {
+      ++false_branch;
+      wrongly_pruned += !(I >= tolerance * r.total_area);
+    }
     else
       wrongly_pruned += !(I < tolerance * r.total_area);
   }
   REQUIRE(wrongly_kept == 0);
   REQUIRE(wrongly_pruned == 0);
   REQUIRE(kept == r.kept_dual_edges.size());
-  if(tolerance == 0) REQUIRE(r.kept_dual_edges.size() == r.dual_edges.size());
+  REQUIRE(false_branch == st.number_of_curvature_pruned_dual_edges);
+  if(tolerance == 0) REQUIRE(r.kept_dual_edges.size() + false_branch == r.dual_edges.size());
   if(genus > 0) REQUIRE_FALSE(st.fallback_single_rung);
 
   // the kept dual structure is connected
@@ -251,10 +259,12 @@ void check_rough_cut_locus(const Mesh& m, const RCL& r, double tolerance, int ge
   std::set<std::size_t> kv;
   Geodesic_ridge::internal::Union_find kuf(m.number_of_vertices());
   std::size_t cut_but_not_kept = 0;
+  const std::set<edge_descriptor> corner_paths(r.corner_path_edges.begin(), r.corner_path_edges.end());
   for(edge_descriptor e : r.cut_edges)
   {
     cut_but_not_kept += r.edge_role[e.idx()] != Geodesic_ridge::Edge_role::dual_kept &&
-                        r.edge_role[e.idx()] != Geodesic_ridge::Edge_role::dual_leaf_extension;
+                        r.edge_role[e.idx()] != Geodesic_ridge::Edge_role::dual_leaf_extension &&
+                        !corner_paths.count(e);
     kv.insert(m.source(m.halfedge(e)).idx());
     kv.insert(m.target(m.halfedge(e)).idx());
     kuf.unite(m.source(m.halfedge(e)).idx(), m.target(m.halfedge(e)).idx());
@@ -305,8 +315,8 @@ void check_rough_cut_locus(const Mesh& m, const RCL& r, double tolerance, int ge
     REQUIRE_FALSE(r.is_cut_edge[m.edge(r.source.edge_halfedge).idx()]);
 
   // no teeth: about one leaf of K per leaf of the kept dual structure (with
-  // its leaf extensions)
-  REQUIRE(st.number_of_cut_leaves <= st.number_of_extended_dual_leaves + 2);
+  // its leaf extensions), and one per corner joined to K
+  REQUIRE(st.number_of_cut_leaves <= st.number_of_extended_dual_leaves + st.number_of_corner_moves + 2);
 }
 
 } // namespace
@@ -515,6 +525,61 @@ TEST_CASE("leaf curvature: the cut graph's leaves go on to the corners of convex
       CHECK(reached_after + 1 >= after.size()); // all corners but at most one
     }
   }
+}
+
+// Branch curvature (parameters::branch_curvature). The doubly covered square is
+// flat but for its four corners (180 degrees each), so a branch of the dual
+// tree that encloses no corner encloses no curvature at all: it is a false
+// branch. Every leaf of the cut locus is a corner, and after the false
+// branches are pruned (and leaves moved onto corners) K's leaves are exactly
+// the four corners, at every tolerance, regular or perturbed. Without the
+// pruning (branch_curvature(0), the paper's cut) K has false leaves.
+TEST_CASE("branch curvature: on the doubly covered square K's leaves are the four corners", "[rough_cut_locus]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  namespace T = Geodesic_ridge::testing;
+  struct Case { int n; double perturbation; unsigned seed; };
+  for(const Case& c : {Case{10, 0, 0}, Case{16, 0, 0}, Case{12, 0.25, 20260101}, Case{16, 0.25, 20260102}})
+  {
+    const unsigned seed = T::test_seed(c.seed);
+    const T::Doubly_covered_square sq = T::make_doubly_covered_square(c.n, c.perturbation, seed);
+    const Mesh& m = sq.mesh;
+    const int n = c.n;
+    const std::set<vertex_descriptor> corners = {sq.top[0], sq.top[n], sq.top[(n + 1) * n], sq.top[(n + 1) * n + n]};
+    std::size_t false_leaves_without = 0;
+    for(const auto& g : std::vector<std::array<int, 2> >{{{n / 4, n / 3}}, {{n / 2 + 1, n / 4}}, {{3 * n / 4, 3 * n / 4 - 1}}})
+      for(double t : {0.0, 0.005, 0.01, 0.025, 0.1})
+      {
+        const vertex_descriptor s = sq.top[g[0] + (n + 1) * g[1]];
+        INFO("doubly covered square n " << n << " perturbation " << c.perturbation << " seed " << seed << " source "
+                                        << s << " tolerance " << t);
+        const RCL r = Geodesic_ridge::compute_rough_cut_locus(m, s, p::tolerance(t));
+        check_rough_cut_locus(m, r, t, 0);
+        std::map<vertex_descriptor, int> degree;
+        for(edge_descriptor e : r.cut_edges) { ++degree[m.source(m.halfedge(e))]; ++degree[m.target(m.halfedge(e))]; }
+        std::set<vertex_descriptor> leaves;
+        for(const auto& [v, k] : degree) if(k == 1) leaves.insert(v);
+        CHECK(leaves == corners);
+        if(t <= 0.01) CHECK(r.statistics.number_of_curvature_pruned_dual_edges > 0);
+        const RCL plain = Geodesic_ridge::compute_rough_cut_locus(m, s, p::tolerance(t, p::branch_curvature(0)));
+        REQUIRE(plain.statistics.number_of_curvature_pruned_dual_edges == 0);
+        false_leaves_without += plain.statistics.number_of_cut_leaves - 4;
+      }
+    std::cout << "[rough_cut_locus] doubly covered square n " << n << " perturbation " << c.perturbation
+              << ": false leaves of K over 15 runs without the branch curvature " << false_leaves_without
+              << ", with it 0\n";
+    CHECK(false_leaves_without > 0);
+  }
+}
+
+TEST_CASE("branch curvature out of range is an error", "[rough_cut_locus]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  const Mesh m = load("torus_1k.off");
+  for(double bad : {-1.0, 721.0, std::nan("")})
+    REQUIRE_THROWS_AS(Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0), p::branch_curvature(bad)),
+                      Geodesic_ridge::Invalid_parameter_error);
+  REQUIRE_NOTHROW(Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0), p::branch_curvature(0)));
 }
 
 TEST_CASE("leaf curvature out of range is an error", "[rough_cut_locus]")

@@ -25,6 +25,8 @@ struct tolerance_t {};
 struct leaf_extension_t {};
 /// Tag of the curvature that draws the cut graph's leaves on (degrees).
 struct leaf_curvature_t {};
+/// Tag of the curvature a kept branch of the cut graph must enclose (degrees).
+struct branch_curvature_t {};
 } // namespace internal_np
 
 /// Default significance tolerance, as recommended by the paper (§4.4).
@@ -43,6 +45,10 @@ constexpr double default_leaf_extension = 1.0;
 /// cheburashka_13k v3334 7.8 -> 3.2 mean edges) at the same precision (p95
 /// 0.04-0.47); 45 reached more corners of the convex test polyhedra than 30.
 constexpr double default_leaf_curvature = 45;
+
+/// Default curvature a kept branch of the dual tree must enclose (degrees;
+/// see `parameters::branch_curvature`).
+constexpr double default_branch_curvature = 15;
 
 namespace parameters {
 
@@ -84,6 +90,18 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_extension)
 /// to the corners and tips that the tolerance cut off.
 GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_curvature)
 
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// A branch of the dual tree kept by the tolerance is pruned back, from its
+/// tip, while the faces beyond its dual edge enclose less than `degrees` of
+/// Gaussian curvature (default `default_branch_curvature`; 0 turns it off).
+/// Why: those faces are the region between the two shortest paths that reach
+/// the ends of the edge; by Gauss-Bonnet they enclose at least the angle
+/// between the two paths where they meet, the jump of the arrival direction.
+/// A branch enclosing (nearly) no curvature separates two parts of one front:
+/// a false branch, which leaves creases where the solver's copies on its two
+/// sides meet. On genus 0 the smaller curvature of the two sides counts.
+GEODESIC_RIDGE_NAMED_PARAMETER(double, branch_curvature)
+
 } // namespace parameters
 
 namespace internal {
@@ -115,6 +133,14 @@ double get_leaf_curvature(const NamedParameters& np)
 {
   return get_number_in_range<internal_np::leaf_curvature_t>(np, default_leaf_curvature, 0, 720, false,
                                                             "leaf curvature (degrees)", "[0, 720]");
+}
+
+/// Reads the branch curvature (degrees) from `np` and checks it.
+template <class NamedParameters>
+double get_branch_curvature(const NamedParameters& np)
+{
+  return get_number_in_range<internal_np::branch_curvature_t>(np, default_branch_curvature, 0, 720, false,
+                                                              "branch curvature (degrees)", "[0, 720]");
 }
 
 /// Reads the tolerance from `np` (default: `default_tolerance`) and checks it.

@@ -438,9 +438,32 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
     std::vector<typename GT::vertex_descriptor> vertex_of(nv);
     for(auto v : vertices(tm)) vertex_of[get(vim, v)] = v;
     const Corner_angles angles = corner_angles(tm, vpm, vim, fim);
-    // total curvature of the vertices within `radius` of a node (grown from its face's corners)
+    std::vector<std::vector<std::size_t> > at(nodes.size());
+    std::vector<std::size_t> live(nodes.size(), 0);
+    for(std::size_t i = 0; i < segments.size(); ++i)
+      if(segments[i].ridge && segments[i].a != segments[i].b)
+      {
+        at[segments[i].a].push_back(i); at[segments[i].b].push_back(i);
+        ++live[segments[i].a]; ++live[segments[i].b];
+      }
+    std::vector<std::size_t> leaves;
+    for(std::size_t v = 0; v < nodes.size(); ++v) if(live[v] == 1) leaves.push_back(v);
+    // every node that has been a free end (the current ones have live == 1)
+    std::vector<std::size_t> ends(leaves);
+    // total curvature of the vertices within `radius` of a node (grown from its face's
+    // corners), counting each vertex for the free end nearest to it only: one
+    // corner ends one branch, and a spur beside a branch that ends at the corner
+    // gets none of it
     const double radius = 2.5 * mean_edge;
     std::vector<std::size_t> seen_at(nv, std::size_t(-1));
+    auto nearer_end = [&](std::size_t node, std::size_t w, double d2) {
+      if(angles.curvature(w) == 0) return false;
+      const Point& q = get(vpm, vertex_of[w]);
+      for(std::size_t u : ends)
+        if(u != node && live[u] == 1 && CGAL::to_double(CGAL::squared_distance(nodes[u].point, q)) < d2)
+          return true;
+      return false;
+    };
     auto curvature_near = [&](std::size_t node) {
       const Point& p = nodes[node].point;
       std::vector<std::size_t> stack;
@@ -448,7 +471,13 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       for(const auto h : corner_halfedges(nodes[node].face))
       {
         const std::size_t v = get(vim, source(h, tm));
-        if(seen_at[v] != node) { seen_at[v] = node; stack.push_back(v); total += angles.curvature(v); }
+        if(seen_at[v] != node)
+        {
+          seen_at[v] = node;
+          stack.push_back(v);
+          if(!nearer_end(node, v, CGAL::to_double(CGAL::squared_distance(get(vpm, vertex_of[v]), p))))
+            total += angles.curvature(v);
+        }
       }
       while(!stack.empty())
       {
@@ -459,9 +488,11 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
           const std::size_t w = get(vim, source(h, tm));
           if(seen_at[w] == node) continue;
           seen_at[w] = node;
-          if(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, vertex_of[w]), p))) > radius) continue;
-          total += angles.curvature(w);
+          const double d2 = CGAL::to_double(CGAL::squared_distance(get(vpm, vertex_of[w]), p));
+          if(std::sqrt(d2) > radius) continue;
           stack.push_back(w);
+          if(nearer_end(node, w, d2)) continue;
+          total += angles.curvature(w);
         }
       }
       return total;
@@ -477,16 +508,6 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
           return true;
       return false;
     };
-    std::vector<std::vector<std::size_t> > at(nodes.size());
-    std::vector<std::size_t> live(nodes.size(), 0);
-    for(std::size_t i = 0; i < segments.size(); ++i)
-      if(segments[i].ridge && segments[i].a != segments[i].b)
-      {
-        at[segments[i].a].push_back(i); at[segments[i].b].push_back(i);
-        ++live[segments[i].a]; ++live[segments[i].b];
-      }
-    std::vector<std::size_t> leaves;
-    for(std::size_t v = 0; v < nodes.size(); ++v) if(live[v] == 1) leaves.push_back(v);
     while(!leaves.empty())
     {
       const std::size_t v = leaves.back();
@@ -506,7 +527,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       ++(weak ? st.pruned_spur_segments : (flat_end ? st.pruned_flat_end_segments : st.pruned_slit_end_segments));
       --live[v];
       const std::size_t w = segments[seg].a == v ? segments[seg].b : segments[seg].a;
-      if(--live[w] == 1) leaves.push_back(w);
+      if(--live[w] == 1) { leaves.push_back(w); ends.push_back(w); }
     }
   }
 
