@@ -572,24 +572,21 @@ TEST_CASE("branch curvature: on the doubly covered square K's leaves are the fou
   }
 }
 
-TEST_CASE("branch curvature out of range is an error", "[rough_cut_locus]")
+TEST_CASE("leaf and branch curvatures out of range are errors", "[rough_cut_locus]")
 {
   namespace p = Geodesic_ridge::parameters;
   const Mesh m = load("torus_1k.off");
+  const vertex_descriptor s(0);
   for(double bad : {-1.0, 721.0, std::nan("")})
-    REQUIRE_THROWS_AS(Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0), p::branch_curvature(bad)),
+  {
+    INFO("curvature " << bad);
+    REQUIRE_THROWS_AS(Geodesic_ridge::compute_rough_cut_locus(m, s, p::leaf_curvature(bad)),
                       Geodesic_ridge::Invalid_parameter_error);
-  REQUIRE_NOTHROW(Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0), p::branch_curvature(0)));
-}
-
-TEST_CASE("leaf curvature out of range is an error", "[rough_cut_locus]")
-{
-  namespace p = Geodesic_ridge::parameters;
-  const Mesh m = load("torus_1k.off");
-  for(double bad : {-1.0, 721.0, std::nan("")})
-    REQUIRE_THROWS_AS(Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0), p::leaf_curvature(bad)),
+    REQUIRE_THROWS_AS(Geodesic_ridge::compute_rough_cut_locus(m, s, p::branch_curvature(bad)),
                       Geodesic_ridge::Invalid_parameter_error);
-  REQUIRE_NOTHROW(Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0), p::leaf_curvature(0)));
+  }
+  REQUIRE_NOTHROW(Geodesic_ridge::compute_rough_cut_locus(m, s, p::leaf_curvature(0)));
+  REQUIRE_NOTHROW(Geodesic_ridge::compute_rough_cut_locus(m, s, p::branch_curvature(0)));
 }
 
 TEST_CASE("convex polyhedra and generated meshes", "[rough_cut_locus]")
