@@ -275,7 +275,6 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
      << "    \"merged_segments\": " << q.merged_segments << ",\n"
      << "    \"pruned_spur_segments\": " << q.pruned_spur_segments << ",\n"
      << "    \"pruned_flat_end_segments\": " << q.pruned_flat_end_segments << ",\n"
-     << "    \"pruned_slit_end_segments\": " << q.pruned_slit_end_segments << ",\n"
      << "    \"dropped_components\": " << q.dropped_components << "\n"
      << "  },\n"
      << "  \"timings_seconds\": {\n"

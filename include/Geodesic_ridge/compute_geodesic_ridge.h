@@ -206,7 +206,7 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   // which border copies still win; fast marching's first-order error is
   // nearly the same for neighbouring fronts).
   bool final_pass = !predicted, grown = true;
-  int passes = 0;
+  auto passes = [&] { return st.solves + st.predicted_passes; };
   for(;;)
   {
     t0 = std::chrono::steady_clock::now();
@@ -222,7 +222,6 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     };
     if(final_pass) { solve_on_E(solver); ++st.solves; }
     else { solve_on_E(Fast_marching_solver()); ++st.predicted_passes; }
-    ++passes;
     st.time_solve += seconds_since(t0);
     if(E.source_is_vertex && distance[E.source_vertex] != 0)
       throw Algorithm_error("the solver's distance at the source is not 0");
@@ -298,7 +297,7 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     st.outer_copies_winning = winning;
     st.time_envelope += seconds_since(t0);
     if(predicted && final_pass) break;
-    if(winning == 0 || passes >= maximum_solves || builder.statistics().rings >= maximum_rings)
+    if(winning == 0 || passes() >= maximum_solves || builder.statistics().rings >= maximum_rings)
     {
       if(!predicted) break;
       final_pass = true; // E is final: the one solve of the solver
@@ -317,20 +316,14 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     if(guided) builder.grow_guided(maximum_rings);
     grown = true;
     // at a cap E is final: no pass to decide on further growth
-    if(predicted && (passes >= maximum_solves || builder.statistics().rings >= maximum_rings)) final_pass = true;
+    if(predicted && (passes() >= maximum_solves || builder.statistics().rings >= maximum_rings)) final_pass = true;
     st.time_extension += seconds_since(t0);
   }
   st.extended_surface = E.statistics;
 
   // Stage 2c + 3: exact envelopes and the ridge curve
   t0 = std::chrono::steady_clock::now();
-  std::vector<std::size_t> cut_leaves;
-  {
-    std::vector<int> degree(num_vertices(tm), 0);
-    for(auto e : rcl.cut_edges) { ++degree[get(vim, source(e, tm))]; ++degree[get(vim, target(e, tm))]; }
-    for(std::size_t v = 0; v < degree.size(); ++v) if(degree[v] == 1) cut_leaves.push_back(v);
-  }
-  assemble_ridge_curve(tm, E, face_copies, mean_edge, minimum_angle, cut_leaves, vpm, vim, fim, eim, result.polylines,
+  assemble_ridge_curve(tm, E, face_copies, mean_edge, minimum_angle, vpm, vim, fim, eim, result.polylines,
                        result.regions, st.ridge);
   st.time_assembly = seconds_since(t0);
   st.ridge.time = st.time_assembly;

@@ -65,8 +65,7 @@ struct Ridge_curve_statistics
   std::size_t rejoined_segments = 0;      ///< merged segments put back to join two pieces of the ridge
   std::size_t dropped_components = 0;     ///< detached pieces dropped
   std::size_t pruned_spur_segments = 0;   ///< free-end segments with a gradient jump below the minimum angle
-  std::size_t pruned_flat_end_segments = 0;
-  std::size_t pruned_slit_end_segments = 0; ///< flat free ends near a leaf of K (see ridge_curve.h) ///< free-end segments with no positive curvature near their end
+  std::size_t pruned_flat_end_segments = 0; ///< free-end segments with no positive curvature near their end
   std::size_t ridge_segments = 0, junctions = 0, free_ends = 0, components = 0, cycles = 0;
   double total_length = 0;
   double time = 0;
@@ -114,7 +113,7 @@ template <class TriangleMesh, class Point, class VertexPointMap, class VertexInd
           class FaceIndexMap, class EdgeIndexMap>
 void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>& E,
                           const std::vector<Face_copies>& face_copies, double mean_edge,
-                          double minimum_angle, const std::vector<std::size_t>& cut_leaves,
+                          double minimum_angle,
                           VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim,
                           std::vector<std::vector<Ridge_point<Point> > >& polylines,
                           std::vector<std::vector<Ridge_region_cell> >& regions,
@@ -187,6 +186,16 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       regions[f].push_back(std::move(rc));
     }
   }
+  // are the copies of cells c1 and c2 glued in E across edge k1 of c1's face
+  // (one sheet)?
+  auto glued_across = [&](std::size_t c1, int k1, std::size_t c2) {
+    const auto& em = E.mesh;
+    typedef typename Extended_surface<Point>::Mesh::Face_index EF;
+    auto eh = em.halfedge(EF(static_cast<typename Extended_surface<Point>::Mesh::size_type>(cells[c1].copy)));
+    for(int j = 0; j < k1; ++j) eh = em.next(eh);
+    const auto eo = em.opposite(eh);
+    return !em.is_border(eo) && std::size_t(em.face(eo)) == cells[c2].copy;
+  };
   auto cell_of = [&](std::size_t f, std::size_t local_copy) {
     for(std::size_t i = 0; i < envelope_of[f]->cells.size(); ++i)
       if(envelope_of[f]->cells[i].copy == local_copy) return cells_of_face[f][i];
@@ -278,12 +287,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       if(envelope_of[f1]->cells.size() == 1 && envelope_of[f2]->cells.size() == 1)
       {
         const std::size_t c1 = cells_of_face[f1][0], c2 = cells_of_face[f2][0];
-        const auto& em = E.mesh;
-        typedef typename Extended_surface<Point>::Mesh::Face_index EF;
-        auto eh = em.halfedge(EF(static_cast<typename Extended_surface<Point>::Mesh::size_type>(cells[c1].copy)));
-        for(int j = 0; j < k1; ++j) eh = em.next(eh);
-        const auto eo = em.opposite(eh);
-        if(!em.is_border(eo) && std::size_t(em.face(eo)) == cells[c2].copy) { fronts.unite(c1, c2); continue; }
+        if(glued_across(c1, k1, c2)) { fronts.unite(c1, c2); continue; }
       }
       // intervals (t along h1: from source(h1) to target(h1)) and the winning cell on each side
       struct Interval { Q lo, hi; std::size_t cell; };
@@ -319,13 +323,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
         for(const auto& iv : side1) if(iv.lo <= mid && mid <= iv.hi) { c1 = iv.cell; break; }
         for(const auto& iv : side2) if(iv.lo <= mid && mid <= iv.hi) { c2 = iv.cell; break; }
         if(c1 == std::size_t(-1) || c2 == std::size_t(-1)) continue;
-        // glued in E across this edge?
-        const auto& em = E.mesh;
-        typedef typename Extended_surface<Point>::Mesh::Face_index EF;
-        auto eh = em.halfedge(EF(static_cast<typename Extended_surface<Point>::Mesh::size_type>(cells[c1].copy)));
-        for(int j = 0; j < k1; ++j) eh = em.next(eh);
-        const auto eo = em.opposite(eh);
-        const bool glued = !em.is_border(eo) && std::size_t(em.face(eo)) == cells[c2].copy;
+        const bool glued = glued_across(c1, k1, c2);
         // strength: jump of the gradient across the edge, unfolded
         const auto g1 = field_gradient(cp1, cells[c1].field), g2 = field_gradient(cp2, cells[c2].field);
         const auto pa = get(vpm, source(h1, tm)), pb = get(vpm, target(h1, tm));
@@ -448,22 +446,9 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       }
     std::vector<std::size_t> leaves;
     for(std::size_t v = 0; v < nodes.size(); ++v) if(live[v] == 1) leaves.push_back(v);
-    // every node that has been a free end (the current ones have live == 1)
-    std::vector<std::size_t> ends(leaves);
-    // total curvature of the vertices within `radius` of a node (grown from its face's
-    // corners), counting each vertex for the free end nearest to it only: one
-    // corner ends one branch, and a spur beside a branch that ends at the corner
-    // gets none of it
+    // total curvature of the vertices within `radius` of a node (grown from its face's corners)
     const double radius = 2.5 * mean_edge;
     std::vector<std::size_t> seen_at(nv, std::size_t(-1));
-    auto nearer_end = [&](std::size_t node, std::size_t w, double d2) {
-      if(angles.curvature(w) == 0) return false;
-      const Point& q = get(vpm, vertex_of[w]);
-      for(std::size_t u : ends)
-        if(u != node && live[u] == 1 && CGAL::to_double(CGAL::squared_distance(nodes[u].point, q)) < d2)
-          return true;
-      return false;
-    };
     auto curvature_near = [&](std::size_t node) {
       const Point& p = nodes[node].point;
       std::vector<std::size_t> stack;
@@ -471,13 +456,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       for(const auto h : corner_halfedges(nodes[node].face))
       {
         const std::size_t v = get(vim, source(h, tm));
-        if(seen_at[v] != node)
-        {
-          seen_at[v] = node;
-          stack.push_back(v);
-          if(!nearer_end(node, v, CGAL::to_double(CGAL::squared_distance(get(vpm, vertex_of[v]), p))))
-            total += angles.curvature(v);
-        }
+        if(seen_at[v] != node) { seen_at[v] = node; stack.push_back(v); total += angles.curvature(v); }
       }
       while(!stack.empty())
       {
@@ -488,25 +467,12 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
           const std::size_t w = get(vim, source(h, tm));
           if(seen_at[w] == node) continue;
           seen_at[w] = node;
-          const double d2 = CGAL::to_double(CGAL::squared_distance(get(vpm, vertex_of[w]), p));
-          if(std::sqrt(d2) > radius) continue;
-          stack.push_back(w);
-          if(nearer_end(node, w, d2)) continue;
+          if(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, vertex_of[w]), p))) > radius) continue;
           total += angles.curvature(w);
+          stack.push_back(w);
         }
       }
       return total;
-    };
-    // A flat free end within one mean edge of a leaf of K is where the ridge
-    // went on past the end of the slit: there the disk's copy wraps around the
-    // slit's end and the ridge inside it is not found (see the manual); what
-    // remains near the slit's end is a hook between inexact copies.
-    auto near_cut_leaf = [&](std::size_t node) {
-      const Point& p = nodes[node].point;
-      for(std::size_t l : cut_leaves)
-        if(CGAL::to_double(CGAL::squared_distance(get(vpm, vertex_of[l]), p)) <= CGAL::square(1.0 * mean_edge))
-          return true;
-      return false;
     };
     while(!leaves.empty())
     {
@@ -521,13 +487,12 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       const bool weak = segments[seg].angle < minimum_angle && curvature_here < corner_curvature;
       const bool flat = !weak && curvature_here < minimum_curvature;
       const bool flat_end = flat && segments[seg].angle < 3 * minimum_angle;
-      const bool slit_end = flat && !flat_end && near_cut_leaf(v);
-      if(!weak && !flat_end && !slit_end) continue;
+      if(!weak && !flat_end) continue;
       segments[seg].ridge = false;
-      ++(weak ? st.pruned_spur_segments : (flat_end ? st.pruned_flat_end_segments : st.pruned_slit_end_segments));
+      ++(weak ? st.pruned_spur_segments : st.pruned_flat_end_segments);
       --live[v];
       const std::size_t w = segments[seg].a == v ? segments[seg].b : segments[seg].a;
-      if(--live[w] == 1) { leaves.push_back(w); ends.push_back(w); }
+      if(--live[w] == 1) leaves.push_back(w);
     }
   }
 

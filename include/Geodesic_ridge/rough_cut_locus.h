@@ -324,6 +324,10 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     dual_of_face[f1][dual_degree[f1]++] = d;
     dual_of_face[f2][dual_degree[f2]++] = d;
   }
+  // the face of dual edge d other than f
+  auto across = [&](std::size_t d, std::size_t f) {
+    return dual_faces_of[d][0] == f ? dual_faces_of[d][1] : dual_faces_of[d][0];
+  };
   // Peel leaves: when a face becomes a leaf, its one remaining dual edge
   // separates the faces accumulated in it from the rest. What is never peeled
   // is the 2-core (the non-contractible cycles and the paths joining them).
@@ -335,11 +339,13 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   const double leaf_curvature = get_leaf_curvature(np) * 3.14159265358979323846 / 180.0;
   const double branch_curvature_min = get_branch_curvature(np) * 3.14159265358979323846 / 180.0;
   const bool curvature_sums = leaf_curvature > 0 || branch_curvature_min > 0;
-  std::vector<double> curvature_share, positive_share(nf, 0.0);
+  std::vector<double> curvature_share, positive_share;
+  // (the corner angles serve the leaves at corners, step 3d, too)
+  const Corner_angles angles = curvature_sums ? corner_angles(tm, vpm, vim, fim) : Corner_angles();
   if(curvature_sums)
   {
-    const Corner_angles angles = corner_angles(tm, vpm, vim, fim);
     curvature_share.assign(nf, 0.0);
+    positive_share.assign(nf, 0.0);
     for(face_descriptor f : faces(tm))
     {
       halfedge_descriptor h = halfedge(f, tm);
@@ -354,7 +360,7 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     }
   }
   std::vector<double> branch_curvature(curvature_share), subtree_curvature(curvature_sums ? nd : 0, 0.0);
-  std::vector<double> branch_positive(positive_share), subtree_positive(nd, 0.0);
+  std::vector<double> branch_positive(positive_share), subtree_positive(curvature_sums ? nd : 0, 0.0);
   std::vector<double> accumulated(area);
   std::vector<unsigned char> degree(dual_degree);
   std::vector<char> peeled(nd, 0);
@@ -375,7 +381,7 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     peel_order.push_back(d);
     const double side = accumulated[f];
     r.significance[ei(r.dual_edges[d])] = (std::min)(side, node_total - side);
-    const std::size_t p = dual_faces_of[d][0] == f ? dual_faces_of[d][1] : dual_faces_of[d][0];
+    const std::size_t p = across(d, f);
     accumulated[p] += side;
     if(curvature_sums)
     {
@@ -461,7 +467,7 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
       --nkept;
       ++st.number_of_curvature_pruned_dual_edges;
       kept_degree[f] = 0;
-      const std::size_t p = dual_faces_of[d][0] == f ? dual_faces_of[d][1] : dual_faces_of[d][0];
+      const std::size_t p = across(d, f);
       if(--kept_degree[p] == 1) tips.push_back(p);
     }
   }
@@ -490,7 +496,7 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     // curvature while that holds a quarter of it, so that it reaches the
     // vertex whose curvature its last faces share)
     auto parent_of = [&](std::size_t d) {
-      return dual_faces_of[d][0] == child_face[d] ? dual_faces_of[d][1] : dual_faces_of[d][0];
+      return across(d, child_face[d]);
     };
     std::vector<std::size_t> best_child(nf, none);
     for(std::size_t d : peel_order)
@@ -641,7 +647,7 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     for(std::size_t d : peel_order)
     {
       const std::size_t c = child_face[d];
-      const std::size_t p = dual_faces_of[d][0] == c ? dual_faces_of[d][1] : dual_faces_of[d][0];
+      const std::size_t p = across(d, c);
       cut_beyond[d] = face_has_cut_beyond[c];
       if(cut_beyond[d] || r.is_cut_edge[ei(r.dual_edges[d])]) face_has_cut_beyond[p] = 1;
     }
@@ -687,7 +693,6 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   if(!st.fallback_single_rung && leaf_curvature > 0)
   {
     const double degree_to_radian = 3.14159265358979323846 / 180.0;
-    const Corner_angles angles = corner_angles(tm, vpm, vim, fim);
     const double corner = 60 * degree_to_radian, sharp_corner = 100 * degree_to_radian;
     std::vector<char> is_seed(nv, 0);
     for(const auto& sd : src.seeds) is_seed[vi(sd.first)] = 1;
