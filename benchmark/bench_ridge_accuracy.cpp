@@ -1,22 +1,48 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 //
-// Question: how close is the computed ridge to the exact one (DESIGN.md §6)?
+// Question: how close is the computed ridge to the exact one, over many
+// sources, with each solver (DESIGN.md §6)? And, with --diagnose: does the
+// extended surface hold every shortest path?
 //
 //   bench_ridge_accuracy [--max-faces N] [--tolerance T] [--recall-tolerance T]
-//                        [--spacing S] [--min-jump DEG] [--outliers] [MESH ...]
+//                        [--sources-per-mesh N] [--random-sources R] [--seed S]
+//                        [--solver exact|fmm|both] [--diagnose] [--no-reference] [--source-vertex V]...
+//                        [--spacing S] [--min-jump DEG] [--outliers] [pipeline options] [MESH ...]
 //
 // Without MESH arguments it runs every .off file of ../shared/data (or of the
 // repository's data/ when ../shared is absent) with at most N faces (default
-// 20000), sorted by size. Sources: vertex 0 and vertex V/2. The reference ridge
-// is built from exact SMSP arrival directions (test/support/reference_ridge.h).
-// Precision (computed -> reference, samples every 0.1 mean edge) is split into
-// the part near reference points with a direction jump >= 30 degrees and the
-// ill-conditioned rest; recall is from reference points with a jump >= 60
-// degrees, at the default tolerance and at a small one (0.005, where branches
-// are not pruned). All distances in mean edge lengths. Prints a Markdown table;
-// with --outliers, also where the computed samples > 0.5 mean edge off lie.
+// 20000), sorted by size.
+//
+// Sources (the rule is printed): vertices floor(i V / N) for i = 0 .. N-1
+// (N = --sources-per-mesh, default 10), then R random `Face_location`s (default
+// 2): a face drawn uniformly by index and barycentric coordinates drawn
+// uniformly on the triangle, from std::mt19937(seed + mesh's face count).
+//
+// The reference ridge is built from exact SMSP arrival directions
+// (test/support/reference_ridge.h; it shares no code with the pipeline): it
+// marks every front boundary with a direction jump of 2 degrees or more, and
+// no saddle shadow line. Precision (computed -> reference, samples every 0.1
+// mean edge) is reported on the part near reference points with a jump >= 30
+// degrees and overall; recall is from reference points with a jump >= 60
+// degrees, at the default tolerance and at the small recall tolerance (0.002,
+// where branches are not pruned). All distances in mean edge lengths.
+//
+// --diagnose adds the checks that name the culprit when a ridge is off:
+//  * exact copies: every vertex of M has a copy in E whose distance is its
+//    distance on M: with the exact solver against SMSP on M (relative 1e-9 of
+//    the distance, plus 1e-9 mean edge); with fast marching against fast
+//    marching on a much larger E (--reference-rings rings everywhere, default
+//    40; not on M, where fast marching mixes the two fronts in the triangles
+//    that straddle the ridge and that mix spreads a few rings on). Reported:
+//    how many vertices miss it, by how much at worst.
+//  * ridge fronts: on every face that the ridge crosses, the winning copies'
+//    smallest value at each corner equals that corner's distance on M (the
+//    fronts that meet there are the exact ones), same tolerances.
+// Prints one row per (mesh, source, solver), then per solver the distribution
+// over the pairs (median, worst and where).
 #include "../test/support/reference_ridge.h"
 
+#include "../test/support/extension_checks.h"
 #include "benchmark_meshes.h"
 
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
@@ -30,22 +56,86 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
+#include <random>
 #include <string>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3>                      Mesh;
+typedef Mesh::Face_index                                    face_descriptor;
+typedef std::pair<face_descriptor, std::array<double, 3> >  Face_location;
 
 namespace fs = std::filesystem;
 namespace GT = Geodesic_ridge::testing;
 
+namespace {
+
+struct Source
+{
+  bool on_vertex = true;
+  Mesh::Vertex_index vertex;
+  Face_location location;
+  std::string name() const
+  {
+    if(on_vertex) return "v" + std::to_string(std::size_t(vertex));
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "f%zu(%.3f,%.3f,%.3f)", std::size_t(location.first), location.second[0],
+                  location.second[1], location.second[2]);
+    return buf;
+  }
+};
+
+std::vector<Source> sources_of(const Mesh& mesh, std::size_t per_mesh, std::size_t random, unsigned seed)
+{
+  std::vector<Source> out;
+  const std::size_t nv = mesh.number_of_vertices();
+  for(std::size_t i = 0; i < per_mesh; ++i)
+  {
+    Source s;
+    s.vertex = Mesh::Vertex_index(static_cast<Mesh::size_type>(i * nv / per_mesh));
+    out.push_back(s);
+  }
+  std::mt19937 rng(seed + static_cast<unsigned>(mesh.number_of_faces()));
+  std::uniform_int_distribution<std::size_t> face(0, mesh.number_of_faces() - 1);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for(std::size_t i = 0; i < random; ++i)
+  {
+    Source s;
+    s.on_vertex = false;
+    const double r1 = std::sqrt(unit(rng)), r2 = unit(rng);
+    s.location = Face_location(face_descriptor(static_cast<Mesh::size_type>(face(rng))),
+                               {{1 - r1, r1 * (1 - r2), r1 * r2}});
+    out.push_back(s);
+  }
+  return out;
+}
+
+struct Pair_result
+{
+  std::string mesh, source, failure;
+  double precision_major_p95 = 0, precision_all_p95 = 0, recall_p95 = 0, recall_small_p95 = 0;
+  std::size_t missing = 0, ridge_front_errors = 0;
+  double worst_excess = 0; // mean edges
+  bool diagnosed = false;
+};
+
+double quantile(std::vector<double> v, double q) { return GT::internal::quantile(std::move(v), q); }
+
+} // namespace
+
 int main(int argc, char** argv)
 {
-  std::size_t max_faces = 20000;
-  double tolerance = 0.025, recall_tolerance = 0.005;
-  bool outliers = false;
+  std::size_t max_faces = 20000, per_mesh = 10, random_sources = 2;
+  unsigned seed = 1;
+  double tolerance = 0.025, recall_tolerance = 0.002;
+  double fmm_tolerance = 0.01;
+  int fmm_skip_rings = 3;
+  bool outliers = false, diagnose = false, reference = true;
+  std::vector<std::string> solvers = {"exact", "fmm"};
   GT::Reference_ridge_options ref_opt;
   std::vector<std::string> files;
+  std::vector<std::size_t> fixed_sources; // --source-vertex V (repeatable): these instead of the rule
   Pipeline_options options;
   for(int i = 1; i < argc; ++i)
   {
@@ -54,22 +144,46 @@ int main(int argc, char** argv)
     if(a == "--max-faces" && i + 1 < argc) max_faces = std::stoul(argv[++i]);
     else if(a == "--tolerance" && i + 1 < argc) tolerance = std::stod(argv[++i]);
     else if(a == "--recall-tolerance" && i + 1 < argc) recall_tolerance = std::stod(argv[++i]);
+    else if(a == "--sources-per-mesh" && i + 1 < argc) per_mesh = std::stoul(argv[++i]);
+    else if(a == "--random-sources" && i + 1 < argc) random_sources = std::stoul(argv[++i]);
+    else if(a == "--seed" && i + 1 < argc) seed = static_cast<unsigned>(std::stoul(argv[++i]));
+    else if(a == "--solver" && i + 1 < argc)
+    {
+      const std::string s = argv[++i];
+      if(s == "both") solvers = {"exact", "fmm"};
+      else if(s == "exact" || s == "fmm") solvers = {s};
+      else { std::cerr << "unknown solver " << s << "\n"; return 2; }
+    }
     else if(a == "--spacing" && i + 1 < argc) ref_opt.spacing = std::stod(argv[++i]);
     else if(a == "--min-jump" && i + 1 < argc) ref_opt.min_jump_degrees = std::stod(argv[++i]);
     else if(a == "--outliers") outliers = true;
+    else if(a == "--diagnose") diagnose = true;
+    else if(a == "--source-vertex" && i + 1 < argc) fixed_sources.push_back(std::stoul(argv[++i]));
+    else if(a == "--fmm-tolerance" && i + 1 < argc) fmm_tolerance = std::stod(argv[++i]);
+    else if(a == "--fmm-skip-rings" && i + 1 < argc) fmm_skip_rings = std::stoi(argv[++i]);
+    else if(a == "--no-reference") reference = false;
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
     else files.push_back(a);
   }
   files = benchmark_meshes(files);
 
-  std::cout << "Distances in mean edge lengths. Precision: computed ridge samples -> reference ridge, "
-               "split by the jump of the nearest reference point (>= 30 deg | < 30 deg); recall: reference "
-               "points with jump >= 60 deg -> computed ridge, at tolerance "
-            << tolerance << " and " << recall_tolerance << ".\n\n"
-            << "| mesh | F | genus | source | prec. median | prec. p95 | prec. max | prec. p95 (<30 deg) "
-               "| recall median | recall p95 | recall p95 @" << recall_tolerance << " | ridge length "
-               "| outliers > 0.5 | compute_ridge_curve (s) | reference (s) | ref. points | ref. queries |\n"
-               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::cout << "Sources per mesh: vertices floor(i V / " << per_mesh << "), i = 0.." << per_mesh - 1 << ", and "
+            << random_sources << " random Face_locations (face uniform by index, point uniform on it; "
+            << "std::mt19937 seeded with " << seed << " + F).\n"
+            << "Distances in mean edge lengths. Precision: computed ridge samples -> reference ridge, on the part "
+               "near reference jumps >= 30 deg and overall; recall: reference points with jump >= 60 deg -> "
+               "computed ridge, at tolerance " << tolerance << " and " << recall_tolerance << ".\n";
+  if(diagnose)
+    std::cout << "Diagnosis: 'missing' = vertices of M whose best copy in E exceeds the distance on M (exact: SMSP "
+                 "on M, 1e-9 relative; fmm: fast marching on an E of 40 rings everywhere, same tolerance), worst excess in mean edges; "
+                 "'front err.' = corners of faces the ridge crosses where the winning copies miss that "
+                 "distance.\n";
+  std::cout << "\n| mesh | F | g | source | solver | prec. p95 (>= 30 deg) | prec. p95 (all) | prec. max | recall p95 "
+               "| recall p95 @" << recall_tolerance << " | F(E)/F | rings | solves | outer winning | missing | worst excess "
+               "| front err. | time (s) |\n"
+               "|---|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+
+  std::map<std::string, std::vector<Pair_result> > results;
   for(const std::string& file : files)
   {
     Mesh mesh;
@@ -78,60 +192,142 @@ int main(int argc, char** argv)
     if(mesh.number_of_faces() > max_faces) continue;
     const long chi = long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) + long(mesh.number_of_faces());
     const long genus = (2 - chi) / 2;
+    const std::string mesh_name = fs::path(file).stem().string();
 
-    for(std::size_t sv : {std::size_t(0), std::size_t(mesh.number_of_vertices() / 2)})
+    std::vector<Source> sources = sources_of(mesh, per_mesh, random_sources, seed);
+    if(!fixed_sources.empty())
     {
-      const Mesh::Vertex_index s(static_cast<Mesh::size_type>(sv));
-      const GT::Reference_ridge<K::Point_3> ref = GT::reference_ridge(mesh, s, ref_opt);
-      double t_ridge = 0;
-      GT::Ridge_accuracy<K::Point_3> acc, acc_small;
-      std::string failure;
-      try
+      sources.clear();
+      for(std::size_t v : fixed_sources)
+        if(v < mesh.number_of_vertices()) { Source s; s.vertex = Mesh::Vertex_index(static_cast<Mesh::size_type>(v)); sources.push_back(s); }
+    }
+    for(const Source& src : sources)
+    {
+      GT::Reference_ridge<K::Point_3> ref;
+      if(reference) ref = src.on_vertex ? GT::reference_ridge(mesh, src.vertex, ref_opt)
+                                        : GT::reference_ridge(mesh, src.location, ref_opt);
+      std::vector<double> exact_on_mesh;
+      auto on_mesh_of = [&](bool exact) {
+        return src.on_vertex ? GT::distances_on_mesh<K>(mesh, src.vertex, exact)
+                             : GT::distances_on_mesh<K>(mesh, src.location, exact);
+      };
+      if(diagnose) exact_on_mesh = on_mesh_of(true);
+      for(const std::string& solver : solvers)
       {
-        const auto t0 = std::chrono::steady_clock::now();
-        const auto rc = Geodesic_ridge::compute_ridge_curve(mesh, s, options.parameters(tolerance));
-        t_ridge = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        acc = GT::ridge_accuracy(ref, rc.polylines, ref_opt);
-        const auto rc_small =
-            Geodesic_ridge::compute_ridge_curve(mesh, s, options.parameters(recall_tolerance));
-        acc_small = GT::ridge_accuracy(ref, rc_small.polylines, ref_opt);
-      }
-      catch(const std::exception& e) { failure = e.what(); }
-      char line[1024];
-      if(!failure.empty())
-      {
-        std::snprintf(line, sizeof line, "| %s | %zu | %ld | v%zu | failed: %s |\n",
-                      fs::path(file).filename().string().c_str(), std::size_t(mesh.number_of_faces()), genus, sv,
-                      failure.c_str());
-        std::cout << line << std::flush;
-        continue;
-      }
-      std::snprintf(line, sizeof line,
-                    "| %s | %zu | %ld | v%zu | %.3f | %.3f | %.2f | %.3f | %.3f | %.3f | %.3f | %.1f | %zu / %zu "
-                    "| %.3f | %.3f | %zu | %zu |\n",
-                    fs::path(file).filename().string().c_str(), std::size_t(mesh.number_of_faces()), genus, sv,
-                    acc.precision_median, acc.precision_p95, acc.precision_max, acc.precision_minor_p95,
-                    acc.recall_median, acc.recall_p95, acc_small.recall_p95, acc.ridge_length,
-                    acc.outliers.size(), acc.computed_samples, t_ridge, ref.time_total, ref.points.size(),
-                    ref.samples);
-      std::cout << line << std::flush;
-      if(outliers && !acc.outliers.empty())
-      {
-        std::size_t near_leaf = 0, near_junction = 0, near_source = 0, minor = 0;
-        double worst = 0;
-        for(const auto& o : acc.outliers)
+        Pair_result r;
+        r.mesh = mesh_name;
+        r.source = src.name();
+        double t_ridge = 0, ratio = 0;
+        int rings = 0, solves = 0;
+        std::size_t winning = 0;
+        std::vector<double> accuracy_line(6, 0);
+        try
         {
-          near_leaf += o.to_leaf <= 1.0;
-          near_junction += o.to_junction <= 1.0;
-          near_source += o.to_source <= 3.0;
-          minor += o.nearest_jump < 30;
-          worst = std::max(worst, o.distance);
+          auto run = [&](double t) {
+            namespace p = Geodesic_ridge::parameters;
+            auto compute = [&](const auto& np) {
+              return src.on_vertex ? Geodesic_ridge::compute_ridge_curve(mesh, src.vertex, np)
+                                   : Geodesic_ridge::compute_ridge_curve(mesh, src.location, np);
+            };
+            if(solver == "fmm") return compute(p::solver(Geodesic_ridge::Fast_marching_solver(), options.parameters(t)));
+            return compute(p::solver(Geodesic_ridge::Exact_solver(), options.parameters(t)));
+          };
+          const auto t0 = std::chrono::steady_clock::now();
+          const auto rc = run(tolerance);
+          t_ridge = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          ratio = double(rc.statistics.extended_surface.number_of_faces) / double(mesh.number_of_faces());
+          rings = rc.statistics.extended_surface.rings;
+          solves = rc.statistics.solves;
+          winning = rc.statistics.outer_copies_winning;
+          if(reference)
+          {
+            const auto acc = GT::ridge_accuracy(ref, rc.polylines, ref_opt);
+            r.precision_major_p95 = acc.precision_p95;
+            r.precision_all_p95 = acc.precision_all_p95;
+            r.recall_p95 = acc.recall_p95;
+            accuracy_line[0] = acc.precision_max;
+            const auto rc_small = run(recall_tolerance);
+            r.recall_small_p95 = GT::ridge_accuracy(ref, rc_small.polylines, ref_opt).recall_p95;
+            if(outliers && !acc.outliers.empty())
+            {
+              std::size_t near_leaf = 0, near_junction = 0, near_source = 0, minor = 0;
+              for(const auto& o : acc.outliers)
+              {
+                near_leaf += o.to_leaf <= 1.0;
+                near_junction += o.to_junction <= 1.0;
+                near_source += o.to_source <= 3.0;
+                minor += o.nearest_jump < 30;
+              }
+              std::cout << "  outliers: " << acc.outliers.size() << ": within 1 edge of a leaf " << near_leaf
+                        << ", of a junction " << near_junction << ", within 3 edges of the source " << near_source
+                        << ", nearest reference jump < 30 deg " << minor << "\n";
+            }
+          }
+          if(diagnose)
+          {
+            r.diagnosed = true;
+            const bool exact = solver == "exact";
+            const GT::Extension_check check =
+                exact ? GT::check_extension(mesh, rc, exact_on_mesh, 1e-9)
+                      : GT::check_extension(mesh, rc, on_mesh_of(false), fmm_tolerance, fmm_skip_rings);
+            r.missing = check.missing.size();
+            r.worst_excess = check.worst_excess;
+            r.ridge_front_errors = check.front_errors;
+          }
         }
-        std::cout << "  outliers: " << acc.outliers.size() << " (worst " << worst << "): within 1 edge of a leaf "
-                  << near_leaf << ", of a junction " << near_junction << ", within 3 edges of the source "
-                  << near_source << ", nearest reference jump < 30 deg " << minor << "\n";
+        catch(const std::exception& e) { r.failure = e.what(); }
+        char line[1024];
+        if(!r.failure.empty())
+          std::snprintf(line, sizeof line, "| %s | %zu | %ld | %s | %s | failed: %s |\n", mesh_name.c_str(),
+                        std::size_t(mesh.number_of_faces()), genus, r.source.c_str(), solver.c_str(), r.failure.c_str());
+        else
+          std::snprintf(line, sizeof line,
+                        "| %s | %zu | %ld | %s | %s | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | %d | %d | %zu | %s | %s | %s | %.3f |\n",
+                        mesh_name.c_str(), std::size_t(mesh.number_of_faces()), genus, r.source.c_str(), solver.c_str(),
+                        r.precision_major_p95, r.precision_all_p95, accuracy_line[0], r.recall_p95, r.recall_small_p95,
+                        ratio, rings, solves, winning, diagnose ? std::to_string(r.missing).c_str() : "-",
+                        diagnose ? std::to_string(r.worst_excess).substr(0, 6).c_str() : "-",
+                        diagnose ? std::to_string(r.ridge_front_errors).c_str() : "-", t_ridge);
+        std::cout << line << std::flush;
+        results[solver].push_back(r);
       }
     }
+  }
+
+  // distribution over the pairs, per solver
+  std::cout << "\n| solver | pairs | failed | prec. p95 (>= 30 deg): median / worst (where) | <= 0.25 | <= 0.5 "
+               "| prec. p95 (all): median / worst | <= 1 | recall p95 @small: median / worst (where) | <= 0.5 "
+               "| pairs missing exact copies |\n|---|---:|---:|---|---:|---:|---|---:|---|---:|---:|\n";
+  for(const auto& [solver, rs] : results)
+  {
+    std::vector<double> pm, pa, rs_small;
+    std::size_t failed = 0, le025 = 0, le05 = 0, le1 = 0, rle05 = 0, with_missing = 0;
+    const Pair_result* worst_p = nullptr;
+    const Pair_result* worst_r = nullptr;
+    for(const auto& r : rs)
+    {
+      if(!r.failure.empty()) { ++failed; continue; }
+      pm.push_back(r.precision_major_p95);
+      pa.push_back(r.precision_all_p95);
+      rs_small.push_back(r.recall_small_p95);
+      le025 += r.precision_major_p95 <= 0.25;
+      le05 += r.precision_major_p95 <= 0.5;
+      le1 += r.precision_all_p95 <= 1.0;
+      rle05 += r.recall_small_p95 <= 0.5;
+      with_missing += r.missing > 0;
+      if(!worst_p || r.precision_major_p95 > worst_p->precision_major_p95) worst_p = &r;
+      if(!worst_r || r.recall_small_p95 > worst_r->recall_small_p95) worst_r = &r;
+    }
+    const std::size_t n = pm.size();
+    char line[1024];
+    std::snprintf(line, sizeof line,
+                  "| %s | %zu | %zu | %.3f / %.3f (%s %s) | %zu | %zu | %.3f / %.3f | %zu | %.3f / %.3f (%s %s) | %zu | %s |\n",
+                  solver.c_str(), rs.size(), failed, quantile(pm, 0.5), n ? *std::max_element(pm.begin(), pm.end()) : 0.0,
+                  worst_p ? worst_p->mesh.c_str() : "-", worst_p ? worst_p->source.c_str() : "-", le025, le05,
+                  quantile(pa, 0.5), n ? *std::max_element(pa.begin(), pa.end()) : 0.0, le1, quantile(rs_small, 0.5),
+                  n ? *std::max_element(rs_small.begin(), rs_small.end()) : 0.0, worst_r ? worst_r->mesh.c_str() : "-",
+                  worst_r ? worst_r->source.c_str() : "-", rle05, diagnose ? std::to_string(with_missing).c_str() : "-");
+    std::cout << line;
   }
   return 0;
 }

@@ -189,18 +189,16 @@ TEST_CASE("pipeline schedules: predicted extension and the tree's distances", "[
         CHECK(st.ridge.components == 1);
         CHECK(st.ridge.cycles == 2 * g);
         CHECK(st.tree_from_solver == (tree_from_solver != 0));
+        // the solver runs on E, and again on a grown E while copies of its
+        // solution still win on E's border, at most maximum_solves times
+        CHECK(st.solves >= 1);
+        CHECK(st.solves <= Geodesic_ridge::default_maximum_solves);
         if(predicted)
         {
-          CHECK(st.solves == 1); // the solver only runs on the final E
           CHECK(st.predicted_passes >= 1);
-          CHECK(st.predicted_passes <= 2);
+          CHECK(st.outer_copies_winning == 0); // E holds every shortest path
         }
-        else
-        {
-          CHECK(st.predicted_passes == 0);
-          CHECK(st.solves >= 1);
-          CHECK(st.solves <= 2);
-        }
+        else CHECK(st.predicted_passes == 0);  // every band costs a solve: maximum_solves may stop it
         faces[tree_from_solver][predicted] = st.extended_surface.number_of_faces;
       }
     // the predicted extension grows about as much as the solved one

@@ -16,8 +16,11 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace Geodesic_ridge {
@@ -28,11 +31,19 @@ struct initial_rings_t {};
 struct extension_step_t {};
 struct maximum_rings_t {};
 struct minimum_spur_angle_t {};
+struct kink_angle_t {};
 struct maximum_solves_t {};
 struct guided_extension_t {};
 struct tree_from_solver_t {};
 struct predicted_extension_t {};
 } // namespace internal_np
+
+/// Default of `parameters::maximum_rings`.
+constexpr int default_maximum_rings = 256;
+/// Default of `parameters::maximum_solves`.
+constexpr int default_maximum_solves = 3;
+/// Default of `parameters::kink_angle` (degrees): the reference's threshold of a major ridge.
+constexpr double default_kink_angle = 60;
 
 namespace parameters {
 /// \ingroup PkgGeodesicRidgeNamedParameters
@@ -53,19 +64,21 @@ solver(const Solver& s, const NamedParameters& np)
 /// Extension rings grown everywhere before the first pass (default 3).
 GEODESIC_RIDGE_NAMED_PARAMETER(int, initial_rings)
 /// \ingroup PkgGeodesicRidgeNamedParameters
-/// Rings grown, after a pass, around the outermost copies that still win area
-/// of their face, before the next pass (default 4).
+/// Rings grown, after a pass, around the copies that still win on a border
+/// edge of E, before the next pass: at least this many (default 4), and half
+/// the depth reached when that is more.
 GEODESIC_RIDGE_NAMED_PARAMETER(int, extension_step)
 /// \ingroup PkgGeodesicRidgeNamedParameters
-/// Hard cap on extension rings (default 7, so at most two solves with the
-/// default initial rings and step): rings beyond the initial ones grow only
-/// where copies of the outermost ring still win area of their face.
+/// A safety cap on extension rings (default 256): rings beyond the initial ones
+/// grow only around copies that still win on a border edge of E, and the growth
+/// stops by itself when none does (`statistics.ring_cap_hit` says when the cap
+/// stopped it instead).
 GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_rings)
 /// \ingroup PkgGeodesicRidgeNamedParameters
-/// Passes on the extended surface at most (default 2): after a pass, E grows
-/// again only where copies on its border still win area. With predicted
-/// extension the passes are fast marching and the solver runs once more, on
-/// the final E.
+/// Solves of the solver on E at most (default 3). With predicted extension,
+/// fast-marching passes decide the growth and the solver runs on the final E;
+/// if copies of its solution still win on E's border, E grows and the solver
+/// runs again. Without, every pass is a solve of the solver.
 GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_solves)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// With `true`, E also grows wherever a front continued across the cut is
@@ -90,6 +103,12 @@ GEODESIC_RIDGE_NAMED_PARAMETER(bool, predicted_extension)
 /// Free ends of the ridge whose gradient jump is below this angle (degrees,
 /// default 15) are pruned, repeatedly; 0 keeps every branch.
 GEODESIC_RIDGE_NAMED_PARAMETER(double, minimum_spur_angle)
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// Copies glued in E (one sheet) whose gradients jump by at least this angle
+/// across a mesh edge (degrees, default 60) still meet at a ridge there: where
+/// the cut graph lacks a branch, both fronts reach its faces inside one sheet.
+/// 0 keeps the sheet-only definition (ridges between sheets only).
+GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle)
 } // namespace parameters
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -100,7 +119,8 @@ struct Geodesic_ridge_statistics
   double tolerance = 0;
   int solves = 0;                 ///< solves of the solver on the extended surface
   int predicted_passes = 0;       ///< fast-marching passes on E that decided the extension steps
-  std::size_t outer_copies_winning = 0; ///< at the last solve: copies on E's border still winning area
+  std::size_t outer_copies_winning = 0; ///< at the last solve: copies still winning on a border edge of E (0: E holds every shortest path)
+  bool ring_cap_hit = false;      ///< the growth stopped at `maximum_rings` with copies still winning
   Rough_cut_locus_statistics rough_cut_locus;
   Extended_surface_statistics extended_surface;
   Ridge_curve_statistics ridge;
@@ -121,11 +141,171 @@ struct Ridge_curve
   std::vector<std::vector<Ridge_point<Point_3> > > polylines;
   /// per face of M (by face index): the cells of the lower envelope with their linear fields
   std::vector<std::vector<Ridge_region_cell> > regions;
+  /// per vertex of M (by index): the smallest of the solver's distances over its
+  /// copies in the extended surface, i.e. the geodesic distance on M when E holds
+  /// every shortest path
+  std::vector<double> vertex_distances;
   Rough_cut_locus<TriangleMesh> rough_cut_locus;
   Geodesic_ridge_statistics statistics;
 };
 
 namespace internal {
+
+// Per face of M, the copies of E whose three corner distances are not all >=
+// those of another copy (a dominated copy never wins, paper §3.2.2).
+template <class Point>
+std::vector<Face_copies> undominated_copies(const Extended_surface<Point>& E, const std::vector<double>& distance,
+                                            std::size_t number_of_faces)
+{
+  std::vector<Face_copies> face_copies(number_of_faces);
+  for(auto c : E.mesh.faces())
+  {
+    const auto h = E.mesh.halfedge(c);
+    const std::array<double, 3> d = {{distance[E.mesh.source(h)], distance[E.mesh.target(h)],
+                                      distance[E.mesh.target(E.mesh.next(h))]}};
+    Face_copies& fc = face_copies[E.original_face[c]];
+    bool dominated = false;
+    for(std::size_t i = 0; i < fc.fields.size() && !dominated; ++i)
+      dominated = fc.fields[i][0] <= d[0] && fc.fields[i][1] <= d[1] && fc.fields[i][2] <= d[2];
+    if(dominated) continue;
+    std::size_t kept = 0;
+    for(std::size_t i = 0; i < fc.fields.size(); ++i)
+      if(!(d[0] <= fc.fields[i][0] && d[1] <= fc.fields[i][1] && d[2] <= fc.fields[i][2]))
+      {
+        fc.fields[kept] = fc.fields[i];
+        fc.copies[kept] = fc.copies[i];
+        ++kept;
+      }
+    fc.fields.resize(kept);
+    fc.copies.resize(kept);
+    fc.fields.push_back(d);
+    fc.copies.push_back(c);
+  }
+  return face_copies;
+}
+
+// Whether the linear function c (values c0, c1 at the ends of an edge) comes
+// within `slack` of the lowest of `others` somewhere on the edge: the minimum
+// of max_j (c - o_j), convex and piecewise linear, lies at an end or where two
+// of the others cross.
+inline bool lowest_somewhere_on_edge(double c0, double c1, const std::vector<std::array<double, 2> >& others,
+                                     double slack)
+{
+  auto excess = [&](double t) {
+    double e = -std::numeric_limits<double>::infinity();
+    for(const auto& o : others) e = std::max(e, (c0 + (c1 - c0) * t) - (o[0] + (o[1] - o[0]) * t));
+    return e;
+  };
+  if(others.empty() || excess(0) <= slack || excess(1) <= slack) return true;
+  for(std::size_t i = 0; i < others.size(); ++i)
+    for(std::size_t j = i + 1; j < others.size(); ++j)
+    {
+      const double d0 = others[i][0] - others[j][0], d1 = others[i][1] - others[j][1];
+      if((d0 < 0) != (d1 < 0) && d0 != d1 && excess(d0 / (d0 - d1)) <= slack) return true;
+    }
+  return false;
+}
+
+// The copies of E (by face index of E) that come within `slack` of the lowest
+// copy somewhere on one of their border edges, among the undominated copies of
+// both faces of M at that edge: their fronts may go on beyond E.
+template <class TriangleMesh, class FaceIndexMap, class Point>
+std::vector<char> copies_winning_on_border(const TriangleMesh& tm, FaceIndexMap fim, const Extended_surface<Point>& E,
+                                           const std::vector<Face_copies>& face_copies, double slack)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  const std::size_t nf = num_faces(tm);
+  // per face of M and edge k (corner k to k+1): the face across and its edge there
+  std::vector<std::array<std::pair<std::size_t, int>, 3> > across(nf);
+  for(typename GT::face_descriptor f : faces(tm))
+  {
+    typename GT::halfedge_descriptor h = halfedge(f, tm);
+    for(int k = 0; k < 3; ++k, h = next(h, tm))
+    {
+      const auto o = opposite(h, tm);
+      const auto g = face(o, tm);
+      int kg = 0;
+      for(auto x = halfedge(g, tm); x != o; x = next(x, tm)) ++kg;
+      across[get(fim, f)][k] = {static_cast<std::size_t>(get(fim, g)), kg};
+    }
+  }
+  const auto& m = E.mesh;
+  std::vector<char> winning(m.number_of_faces(), 0);
+  std::vector<std::array<double, 2> > others;
+  for(auto b : m.halfedges())
+  {
+    if(!m.is_border(b)) continue;
+    const auto h = m.opposite(b);
+    const std::size_t c = std::size_t(m.face(h));
+    if(winning[c]) continue;
+    int k = 0;
+    for(auto x = m.halfedge(m.face(h)); x != h; x = m.next(x)) ++k;
+    const std::size_t f = E.original_face[c];
+    const Face_copies& fc = face_copies[f];
+    const auto it = std::find(fc.copies.begin(), fc.copies.end(), c);
+    if(it == fc.copies.end()) continue; // dominated: never the lowest
+    const auto& d = fc.fields[std::size_t(it - fc.copies.begin())];
+    others.clear();
+    for(std::size_t i = 0; i < fc.copies.size(); ++i)
+      if(fc.copies[i] != c) others.push_back({{fc.fields[i][k], fc.fields[i][(k + 1) % 3]}});
+    const auto [g, kg] = across[f][k];
+    for(const auto& o : face_copies[g].fields) others.push_back({{o[(kg + 1) % 3], o[kg]}});
+    if(lowest_somewhere_on_edge(d[k], d[(k + 1) % 3], others, slack)) winning[c] = 1;
+  }
+  return winning;
+}
+
+// per vertex of M: the smallest distance over its copies in E
+template <class Point>
+std::vector<double> smallest_over_copies(const Extended_surface<Point>& E, const std::vector<double>& distance,
+                                         std::size_t number_of_vertices)
+{
+  std::vector<double> best(number_of_vertices, std::numeric_limits<double>::infinity());
+  for(auto v : E.mesh.vertices()) best[E.original_vertex[v]] = std::min(best[E.original_vertex[v]], distance[v]);
+  return best;
+}
+
+// the distances from the source over E, by vertex index of E
+template <class Point, class Solver>
+void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vector<double>& distance)
+{
+  if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance));
+  else solver(E.mesh, E.source_location, CGAL::make_property_map(distance));
+}
+
+// Fast marching over E from the corners of its first `anchor.size()` copies,
+// which keep the given distances (a corner shared by copies, or merged since,
+// starts from the smallest): the solver's fronts carried onto the copies grown
+// since it ran.
+template <class Point>
+void fast_marching_from_anchors(const Extended_surface<Point>& E, const std::vector<std::array<double, 3> >& anchor,
+                                std::vector<double>& distance)
+{
+  typedef typename Extended_surface<Point>::Mesh Mesh;
+  std::vector<std::pair<typename Mesh::Vertex_index, double> > seeds;
+  seeds.reserve(3 * anchor.size());
+  for(std::size_t c = 0; c < anchor.size(); ++c)
+  {
+    auto h = E.mesh.halfedge(typename Mesh::Face_index(static_cast<typename Mesh::size_type>(c)));
+    for(int k = 0; k < 3; ++k, h = E.mesh.next(h)) seeds.emplace_back(E.mesh.source(h), anchor[c][k]);
+  }
+  fast_marching_distances(E.mesh, E.mesh.points(), get(CGAL::vertex_index, E.mesh), seeds, distance);
+}
+
+// per face of E (a copy): the distances at its three corners
+template <class Point>
+std::vector<std::array<double, 3> > corner_distances(const Extended_surface<Point>& E,
+                                                     const std::vector<double>& distance)
+{
+  std::vector<std::array<double, 3> > out;
+  out.reserve(E.mesh.number_of_faces());
+  for(auto c : E.mesh.faces())
+  {
+    auto h = E.mesh.halfedge(c);
+    out.push_back({{distance[E.mesh.source(h)], distance[E.mesh.target(h)], distance[E.mesh.target(E.mesh.next(h))]}});
+  }
+  return out;
+}
 
 template <class TriangleMesh, class NamedParameters>
 auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src, const NamedParameters& np)
@@ -142,9 +322,10 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   const auto solver = choose_parameter(get_parameter(np, internal_np::solver_t()), Exact_solver());
   const int initial_rings = choose_parameter(get_parameter(np, internal_np::initial_rings_t()), 3);
   const double minimum_angle = choose_parameter(get_parameter(np, internal_np::minimum_spur_angle_t()), 15.0);
+  const double kink_angle = choose_parameter(get_parameter(np, internal_np::kink_angle_t()), default_kink_angle);
   const int extension_step = choose_parameter(get_parameter(np, internal_np::extension_step_t()), 4);
-  const int maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), 7);
-  const int maximum_solves = choose_parameter(get_parameter(np, internal_np::maximum_solves_t()), 2);
+  const int maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), default_maximum_rings);
+  const int maximum_solves = choose_parameter(get_parameter(np, internal_np::maximum_solves_t()), default_maximum_solves);
   const bool guided = choose_parameter(get_parameter(np, internal_np::guided_extension_t()), false);
   const bool tree_from_solver =
       guided || choose_parameter(get_parameter(np, internal_np::tree_from_solver_t()), false);
@@ -201,12 +382,31 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 
   Extended_surface<Point> E;
   std::vector<Face_copies> face_copies;
-  // With predicted extension, fast-marching passes decide where E grows, and
-  // the solver runs once, on the final E (the extension only needs to know
-  // which border copies still win; fast marching's first-order error is
-  // nearly the same for neighbouring fronts).
-  bool final_pass = !predicted, grown = true;
-  auto passes = [&] { return st.solves + st.predicted_passes; };
+  // The growth rule (doc/manual.md, "The growth rule"): E grows a band of
+  // rings around every copy that still comes lowest somewhere on one of its
+  // border edges, until none does. A shortest path that leaves E crosses E's
+  // border where its front is exact, so no copy is lower there: without such
+  // copies E holds every shortest path. Passes on E decide the growth:
+  //  * predicted: fast marching from the source (cheap; most of the growth);
+  //  * solve: the solver (its distances make the ridge; its test is within
+  //    round-off for the exact solver);
+  //  * anchored: after a solve that still found such copies, fast marching on
+  //    the grown E seeded with the solver's distances on the copies it solved,
+  //    so that the growth follows the solver's fronts and the solver runs once
+  //    more, not once per band. Fast marching from the source misjudges which
+  //    front wins by up to half an edge (it has no pseudo-sources: fronts that
+  //    bend around saddle vertices come out late), far more than any slack
+  //    that would not grow E everywhere (teddy_3k v0: 36 rings short).
+  // With fast marching as the solver, its passes are the solves.
+  const double fast_marching_slack = 0.02 * mean_edge; // noise between neighbouring fronts
+  const double exact_slack_on_border = 1e-9 * mean_edge; // round-off
+  const bool solver_is_exact = std::is_same<std::decay_t<decltype(solver)>, Exact_solver>::value;
+  const bool solver_is_fast_marching = std::is_same<std::decay_t<decltype(solver)>, Fast_marching_solver>::value;
+  enum class Pass { predicted, solve, anchored };
+  Pass pass = predicted && !solver_is_fast_marching ? Pass::predicted : Pass::solve;
+  bool grown = true;
+  std::size_t copies_at_last_solve = 0;
+  std::vector<std::array<double, 3> > anchor; // per copy, at the last solve: its corner distances
   for(;;)
   {
     t0 = std::chrono::steady_clock::now();
@@ -216,114 +416,64 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 
     t0 = std::chrono::steady_clock::now();
     std::vector<double> distance(E.mesh.number_of_vertices());
-    auto solve_on_E = [&](const auto& geodesic_solver) {
-      if(E.source_is_vertex) geodesic_solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance));
-      else geodesic_solver(E.mesh, E.source_location, CGAL::make_property_map(distance));
-    };
-    if(final_pass) { solve_on_E(solver); ++st.solves; }
-    else { solve_on_E(Fast_marching_solver()); ++st.predicted_passes; }
+    if(pass == Pass::solve) { solve_on(E, solver, distance); ++st.solves; }
+    else if(pass == Pass::predicted) { solve_on(E, Fast_marching_solver(), distance); ++st.predicted_passes; }
+    else { fast_marching_from_anchors(E, anchor, distance); ++st.predicted_passes; }
     st.time_solve += seconds_since(t0);
-    if(E.source_is_vertex && distance[E.source_vertex] != 0)
+    if(pass == Pass::solve && E.source_is_vertex && distance[E.source_vertex] != 0)
       throw Algorithm_error("the solver's distance at the source is not 0");
 
-    // the copies of every face, undominated ones only (a copy whose three corner
-    // distances are all >= another's never wins)
     t0 = std::chrono::steady_clock::now();
-    face_copies.assign(nf, {});
-    for(auto c : E.mesh.faces())
-    {
-      const auto h = E.mesh.halfedge(c);
-      const std::array<double, 3> d = {{distance[E.mesh.source(h)], distance[E.mesh.target(h)],
-                                        distance[E.mesh.target(E.mesh.next(h))]}};
-      Face_copies& fc = face_copies[E.original_face[c]];
-      bool dominated = false;
-      for(std::size_t i = 0; i < fc.fields.size() && !dominated; ++i)
-        dominated = fc.fields[i][0] <= d[0] && fc.fields[i][1] <= d[1] && fc.fields[i][2] <= d[2];
-      if(dominated) continue;
-      std::size_t kept = 0;
-      for(std::size_t i = 0; i < fc.fields.size(); ++i)
-        if(!(d[0] <= fc.fields[i][0] && d[1] <= fc.fields[i][1] && d[2] <= fc.fields[i][2]))
-        {
-          fc.fields[kept] = fc.fields[i];
-          fc.copies[kept] = fc.copies[i];
-          ++kept;
-        }
-      fc.fields.resize(kept);
-      fc.copies.resize(kept);
-      fc.fields.push_back(d);
-      fc.copies.push_back(c);
-    }
-    // copies on the border of E that win more than 1% of their face and are
-    // exact at a border vertex off the cut: their front goes on beyond E
-    auto unfinished = [&](std::size_t c) {
-      typedef typename Extended_surface<Point>::Mesh::Face_index EF;
-      const auto& m = E.mesh;
-      const auto h0 = m.halfedge(EF(static_cast<typename Extended_surface<Point>::Mesh::size_type>(c)));
-      auto h = h0;
-      do
-      {
-        if(m.is_border(m.opposite(h)))
-          for(auto v : {m.source(h), m.target(h)})
-          {
-            const std::size_t o = E.original_vertex[v];
-            if(!builder.on_cut(o) && distance[v] <= field[o] + exact_slack) return true;
-          }
-        h = m.next(h);
-      } while(h != h0);
-      return false;
-    };
-    // Without guided growth: the copies of the outermost ring that win (the
-    // rings grow uniformly, so that ring is E's border).
-    const int outer = builder.statistics().rings;
-    auto frontier = [&](std::size_t c) {
-      return guided ? (E.ring[c] > 0 && unfinished(c)) : (outer > 0 && E.ring[c] == outer);
-    };
-    std::vector<char> grow_from(E.mesh.number_of_faces(), 0);
-    std::size_t winning = 0;
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      const Face_copies& fc = face_copies[f];
-      bool candidate = false;
-      for(std::size_t c : fc.copies) candidate |= frontier(c);
-      if(!candidate) continue;
-      const Lower_envelope<double> env = compute_lower_envelope<double>(fc.fields);
-      for(const auto& cell : env.cells)
-        if(frontier(fc.copies[cell.copy]) && barycentric_area(cell.polygon) > 0.01 * 0.5)
-        {
-          grow_from[fc.copies[cell.copy]] = 1;
-          ++winning;
-        }
-    }
-    st.outer_copies_winning = winning;
+    face_copies = undominated_copies(E, distance, nf);
+    const double slack = pass == Pass::solve && solver_is_exact ? exact_slack_on_border : fast_marching_slack;
+    std::vector<char> grow_from = copies_winning_on_border(tm, fim, E, face_copies, slack);
+    const std::size_t winning = static_cast<std::size_t>(std::count(grow_from.begin(), grow_from.end(), 1));
     st.time_envelope += seconds_since(t0);
-    if(predicted && final_pass) break;
-    if(winning == 0 || passes() >= maximum_solves || builder.statistics().rings >= maximum_rings)
+    if(pass == Pass::solve)
     {
-      if(!predicted) break;
-      final_pass = true; // E is final: the one solve of the solver
+      st.outer_copies_winning = winning;
+      result.vertex_distances = smallest_over_copies(E, distance, num_vertices(tm));
+      anchor = corner_distances(E, distance);
+      copies_at_last_solve = builder.number_of_copies();
+    }
+
+    // grow a band of `extension_step` rings around them (each ring from the
+    // copies the previous one added), unless E is final
+    const bool solves_left = pass != Pass::solve || solver_is_fast_marching || st.solves < maximum_solves;
+    if(winning > 0 && solves_left && builder.statistics().rings < maximum_rings)
+    {
+      t0 = std::chrono::steady_clock::now();
+      const std::size_t before_band = builder.number_of_copies();
+      // a band of at least `extension_step` rings, and half the depth reached:
+      // a front that crossed a badly placed cut may win far beyond it (knot_3k
+      // v304: along the whole tube behind a rung), reached in O(log) passes
+      const int band = std::max(extension_step, builder.statistics().rings / 2);
+      for(int step = 0; step < band && builder.statistics().rings < maximum_rings; ++step)
+      {
+        const std::size_t before = builder.number_of_copies();
+        builder.grow_ring(&grow_from);
+        grow_from.assign(builder.number_of_copies(), 0);
+        for(std::size_t c = before; c < builder.number_of_copies(); ++c) grow_from[c] = 1;
+      }
+      if(guided) builder.grow_guided(maximum_rings);
+      grown = builder.number_of_copies() > before_band; // not at a leaf's winding bound
+      st.time_extension += seconds_since(t0);
+    }
+    if(grown)
+    {
+      if(pass == Pass::solve && !solver_is_fast_marching && predicted) pass = Pass::anchored;
       continue;
     }
-    // grow a band of `extension_step` rings around them (each ring from the
-    // copies the previous one added), then wherever fronts are still exact
-    t0 = std::chrono::steady_clock::now();
-    for(int step = 0; step < extension_step && builder.statistics().rings < maximum_rings; ++step)
-    {
-      const std::size_t before = builder.number_of_copies();
-      builder.grow_ring(&grow_from);
-      grow_from.assign(builder.number_of_copies(), 0);
-      for(std::size_t c = before; c < builder.number_of_copies(); ++c) grow_from[c] = 1;
-    }
-    if(guided) builder.grow_guided(maximum_rings);
-    grown = true;
-    // at a cap E is final: no pass to decide on further growth
-    if(predicted && (passes() >= maximum_solves || builder.statistics().rings >= maximum_rings)) final_pass = true;
-    st.time_extension += seconds_since(t0);
+    // E is final for now: done if the solver has solved it, else solve
+    if(pass == Pass::solve || builder.number_of_copies() == copies_at_last_solve) break;
+    pass = Pass::solve;
   }
+  st.ring_cap_hit = st.outer_copies_winning > 0 && builder.statistics().rings >= maximum_rings;
   st.extended_surface = E.statistics;
 
   // Stage 2c + 3: exact envelopes and the ridge curve
   t0 = std::chrono::steady_clock::now();
-  assemble_ridge_curve(tm, E, face_copies, mean_edge, minimum_angle, vpm, vim, fim, eim, result.polylines,
+  assemble_ridge_curve(tm, E, face_copies, mean_edge, minimum_angle, kink_angle, vpm, vim, fim, eim, result.polylines,
                        result.regions, st.ridge);
   st.time_assembly = seconds_since(t0);
   st.ridge.time = st.time_assembly;
@@ -344,13 +494,17 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 ///
 /// \param np named parameters: `Geodesic_ridge::parameters::tolerance(t)`,
 ///   `solver(s)` (a `GeodesicSolver`, default `Exact_solver`), `initial_rings(k)`
-///   (default 3), `extension_step(k)` (default 4), `maximum_rings(k)` (default 7),
-///   `maximum_solves(k)` (default 2), `predicted_extension(b)` (default true),
+///   (default 3), `extension_step(k)` (default 4), `maximum_rings(k)` (default 256),
+///   `maximum_solves(k)` (default 3), `predicted_extension(b)` (default true),
 ///   `tree_from_solver(b)` (default false), `minimum_spur_angle(deg)` (default 15),
+///   `kink_angle(deg)` (default 60),
 ///   the experimental `guided_extension(b)` and `leaf_extension(f)`, then CGAL's `vertex_point_map`,
 ///   `vertex_index_map`, `face_index_map`, `edge_index_map`.
 /// \post the ridge is connected, a tree on a genus-0 surface, with exactly 2g
 ///   independent cycles on genus g (`Algorithm_error` otherwise).
+/// \post unless `statistics.outer_copies_winning > 0` (a cap stopped the
+///   growth), the extended surface holds a shortest path to every vertex:
+///   `vertex_distances` are the solver's distances on M.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto compute_ridge_curve(const TriangleMesh& tm,
                          typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,

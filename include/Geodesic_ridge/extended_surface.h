@@ -8,7 +8,7 @@
 // faces around a vertex copy covers the vertex's whole star, its two end faces
 // are glued (fan closure), which may merge and close further fans. At a leaf of
 // K the fan winds past 2π, as at the end of a slit in a double cover; it is
-// bounded at 4π.
+// bounded at three turns (see `leaf_winding_stars`).
 #ifndef GEODESIC_RIDGE_EXTENDED_SURFACE_H
 #define GEODESIC_RIDGE_EXTENDED_SURFACE_H
 
@@ -39,9 +39,10 @@ struct Extended_surface_statistics
   std::size_t number_of_vertices = 0;   ///< vertices of E
   std::vector<std::size_t> faces_per_ring; ///< faces added by ring k (ring 0 = D)
   std::size_t number_of_closures = 0;   ///< fans closed by gluing their two end faces
-  std::size_t winding_bound_hits = 0;   ///< faces not added at a leaf of K: its fan reached 4π
+  std::size_t winding_bound_hits = 0;   ///< faces not added at a leaf of K: its fan reached three turns
   std::size_t refused_faces = 0;        ///< faces not added elsewhere: a fan would exceed its star (should be 0)
-  std::size_t refused_gluings = 0;      ///< closures refused: wrong cone angle, overlap or order (should be 0)
+  std::size_t refused_gluings = 0;      ///< closures refused: end faces not adjacent (should be 0)
+  std::size_t open_fans = 0;            ///< full fans left open: closing them would overlap another fan
   std::size_t number_of_leaf_vertices = 0; ///< copies of leaves of K (fans winding past 2π)
   std::size_t guided_faces = 0;         ///< copies added by the growth guided by the exact distance on M
   int guided_rings = 0;                 ///< rings the guided growth took (its deepest copy)
@@ -91,6 +92,14 @@ class Extended_surface_builder
   typedef typename GT::face_descriptor                        face_descriptor;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point_3;
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  // A fan at a leaf of K holds at most this many copies of the vertex's star.
+  // The sheets grown across the slit from its two sides share that one fan,
+  // and each may need to wind once around the leaf (a front that crosses the
+  // slit beyond the true ridge's end, on a saddle even past π): 1 + 1 + 1. At
+  // two stars (4π) the sheets starved each other (knot_3k, teddy_3k: vertices
+  // left without their exact copy); the growth only goes where fronts still
+  // win, so the bound costs nothing where it is not needed.
+  static constexpr std::uint32_t leaf_winding_stars = 3;
 
   struct Copy
   {
@@ -399,7 +408,7 @@ private:
     fans_.push_back(Fan{v, first, first, 1, false, false});
     return id;
   }
-  std::uint32_t limit(const Fan& f) const { return f.leaf ? 2 * degree_[f.vertex] : degree_[f.vertex]; }
+  std::uint32_t limit(const Fan& f) const { return f.leaf ? leaf_winding_stars * degree_[f.vertex] : degree_[f.vertex]; }
 
   std::uint32_t add_copy_across(std::uint32_t c, int k, int r)
   {
@@ -606,7 +615,7 @@ private:
         const Fan& fz = fans_[zL];
         if(fz.leaf || fz.closed || fz.first != L || fz.last != F || fz.size != degree_[fz.vertex])
         {
-          ++stats_.refused_gluings;
+          leave_open(x);
           continue;
         }
         glue(L, eL, F, eF);
@@ -618,9 +627,9 @@ private:
       // around z, F comes before L: fan(zF) ends with F, fan(zL) starts with L
       const Fan a = fans_[zF], b = fans_[zL];
       if(a.last != F || b.first != L || a.closed || b.closed || (a.leaf && b.leaf) ||
-         a.size + b.size > ((a.leaf || b.leaf) ? 2 * degree_[a.vertex] : degree_[a.vertex]))
+         a.size + b.size > ((a.leaf || b.leaf) ? leaf_winding_stars * degree_[a.vertex] : degree_[a.vertex]))
       {
-        ++stats_.refused_gluings;
+        leave_open(x);
         continue;
       }
       glue(L, eL, F, eF);
@@ -632,6 +641,18 @@ private:
       fans_[zF].leaf = a.leaf || b.leaf;
       pending.push_back(zF);
     }
+  }
+
+  // The fan of x covers its star, but gluing its end faces would make a copy
+  // of the vertex z at their far end wind past its star: the sheet grew
+  // around x and z from two sides that E does not know to be one (copies of
+  // one face of the cover of M, made twice). x is left open, a boundary
+  // vertex of E like a leaf of K, and may wind on, so the growth goes on
+  // around it (else its fronts stop there and vertices lose their exact copy).
+  void leave_open(std::uint32_t x)
+  {
+    fans_[x].leaf = true;
+    ++stats_.open_fans;
   }
 
   void glue(std::uint32_t a, int ea, std::uint32_t b, int eb)

@@ -113,7 +113,7 @@ template <class TriangleMesh, class Point, class VertexPointMap, class VertexInd
           class FaceIndexMap, class EdgeIndexMap>
 void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>& E,
                           const std::vector<Face_copies>& face_copies, double mean_edge,
-                          double minimum_angle,
+                          double minimum_angle, double kink_angle,
                           VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim,
                           std::vector<std::vector<Ridge_point<Point> > >& polylines,
                           std::vector<std::vector<Ridge_region_cell> >& regions,
@@ -266,6 +266,31 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
     }
   }
 
+  // A kink inside one sheet: copies glued across an edge whose gradients,
+  // unfolded across it, differ by at least `kink_angle`. Where the cut graph K
+  // lacks a branch of the cut locus, both fronts reach the faces along that
+  // branch inside one sheet of E, and only the kink shows the ridge there.
+  auto kinked = [&](std::size_t f1, int k1, std::size_t c1, std::size_t f2, int k2, std::size_t c2) {
+    if(kink_angle <= 0) return false;
+    const auto cp1 = corner_points(f1), cp2 = corner_points(f2);
+    const auto g1 = field_gradient(cp1, cells[c1].field), g2 = field_gradient(cp2, cells[c2].field);
+    const Point& a = cp1[k1];
+    const Point& b = cp1[(k1 + 1) % 3];
+    double t[3] = {b.x() - a.x(), b.y() - a.y(), b.z() - a.z()};
+    const double tl = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    for(double& x : t) x /= tl;
+    auto inward = [&](const Point& p, const Point& q) { // unit, in the face, normal to the edge, towards q
+      double w[3] = {q.x() - p.x(), q.y() - p.y(), q.z() - p.z()};
+      const double along = w[0] * t[0] + w[1] * t[1] + w[2] * t[2];
+      for(int j = 0; j < 3; ++j) w[j] -= along * t[j];
+      const double l = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+      return std::array<double, 3>{{w[0] / l, w[1] / l, w[2] / l}};
+    };
+    const auto m1 = inward(a, cp1[(k1 + 2) % 3]), m2 = inward(a, cp2[(k2 + 2) % 3]);
+    auto dot = [](const std::array<double, 3>& x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+    return angle_between(dot(g1, t), dot(g1, m1.data()), dot(g2, t), -dot(g2, m2.data())) >= kink_angle;
+  };
+
   // ---- along mesh edges: split the edge by both sides' cell boundaries
   std::vector<char> edge_done(ne, 0);
   for(std::size_t f1 = 0; f1 < nf; ++f1)
@@ -287,7 +312,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       if(envelope_of[f1]->cells.size() == 1 && envelope_of[f2]->cells.size() == 1)
       {
         const std::size_t c1 = cells_of_face[f1][0], c2 = cells_of_face[f2][0];
-        if(glued_across(c1, k1, c2)) { fronts.unite(c1, c2); continue; }
+        if(glued_across(c1, k1, c2) && !kinked(f1, k1, c1, f2, k2, c2)) { fronts.unite(c1, c2); continue; }
       }
       // intervals (t along h1: from source(h1) to target(h1)) and the winning cell on each side
       struct Interval { Q lo, hi; std::size_t cell; };
@@ -358,7 +383,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
                            std::abs(value(cells[c1], k1, cuts[i + 1]) - value(cells[c2], k2, Q(1) - cuts[i + 1])) <=
                                same_front_tolerance &&
                            (strength <= 1e-6 || angle < minimum_angle);
-        if(glued || equal) { fronts.unite(c1, c2); continue; }
+        if((glued && !(kink_angle > 0 && angle >= kink_angle)) || equal) { fronts.unite(c1, c2); continue; }
         // the two edge points, from f1's side
         std::array<Q, 3> la = {{Q(0), Q(0), Q(0)}}, lb = la;
         la[k1] = Q(1) - cuts[i]; la[(k1 + 1) % 3] = cuts[i];

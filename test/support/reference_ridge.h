@@ -511,6 +511,7 @@ struct Ridge_accuracy
   std::size_t major_samples = 0, minor_samples = 0;
   double precision_median = 0, precision_p95 = 0, precision_max = 0;             ///< major part (jump >= 30)
   double precision_minor_median = 0, precision_minor_p95 = 0, precision_minor_max = 0; ///< minor part
+  double precision_all_p95 = 0;                                                  ///< both parts together
   std::size_t recall_points = 0;
   double recall_median = 0, recall_p95 = 0, recall_max = 0;                      ///< reference jump >= 60
   double ridge_length = 0;                ///< total length of the computed polylines (mean edges)
@@ -677,6 +678,11 @@ Ridge_accuracy<Point_3> ridge_accuracy(const Reference_ridge<Point_3>& ref,
   A.precision_minor_median = quantile(minor, 0.5);
   A.precision_minor_p95 = quantile(minor, 0.95);
   A.precision_minor_max = minor.empty() ? 0 : *std::max_element(minor.begin(), minor.end());
+  {
+    std::vector<double> all = major;
+    all.insert(all.end(), minor.begin(), minor.end());
+    A.precision_all_p95 = quantile(all, 0.95);
+  }
 
   // ---- recall
   const Nearest_points<Point_3> sample_search(samples);
