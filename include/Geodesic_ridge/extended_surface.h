@@ -114,7 +114,7 @@ class Extended_surface_builder
     std::uint32_t vertex;     // original vertex
     std::uint32_t first, last; // end face copies, in rotation order around the vertex
     std::uint32_t size;       // number of face copies
-    bool leaf;                // the copy at a leaf of K: winds past 2π, never closes
+    bool leaf;                // at a leaf of K, or left open (leave_open): winds past 2π, never closes
     bool closed;
   };
   // A copy laid out in the plane of its chain (the copies it was grown from,
