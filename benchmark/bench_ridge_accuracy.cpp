@@ -96,16 +96,11 @@ std::vector<Source> sources_of(const Mesh& mesh, std::size_t per_mesh, std::size
     s.vertex = Mesh::Vertex_index(static_cast<Mesh::size_type>(i * nv / per_mesh));
     out.push_back(s);
   }
-  std::mt19937 rng(seed + static_cast<unsigned>(mesh.number_of_faces()));
-  std::uniform_int_distribution<std::size_t> face(0, mesh.number_of_faces() - 1);
-  std::uniform_real_distribution<double> unit(0, 1);
-  for(std::size_t i = 0; i < random; ++i)
+  for(const Face_location& loc : GT::random_face_locations(mesh, random, seed + static_cast<unsigned>(mesh.number_of_faces())))
   {
     Source s;
     s.on_vertex = false;
-    const double r1 = std::sqrt(unit(rng)), r2 = unit(rng);
-    s.location = Face_location(face_descriptor(static_cast<Mesh::size_type>(face(rng))),
-                               {{1 - r1, r1 * (1 - r2), r1 * r2}});
+    s.location = loc;
     out.push_back(s);
   }
   return out;
@@ -220,7 +215,7 @@ int main(int argc, char** argv)
         double t_ridge = 0, ratio = 0;
         int rings = 0, solves = 0;
         std::size_t winning = 0;
-        std::vector<double> accuracy_line(6, 0);
+        double precision_max = 0;
         try
         {
           auto run = [&](double t) {
@@ -245,7 +240,7 @@ int main(int argc, char** argv)
             r.precision_major_p95 = acc.precision_p95;
             r.precision_all_p95 = acc.precision_all_p95;
             r.recall_p95 = acc.recall_p95;
-            accuracy_line[0] = acc.precision_max;
+            precision_max = acc.precision_max;
             const auto rc_small = run(recall_tolerance);
             r.recall_small_p95 = GT::ridge_accuracy(ref, rc_small.polylines, ref_opt).recall_p95;
             if(outliers && !acc.outliers.empty())
@@ -284,7 +279,7 @@ int main(int argc, char** argv)
           std::snprintf(line, sizeof line,
                         "| %s | %zu | %ld | %s | %s | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | %d | %d | %zu | %s | %s | %s | %.3f |\n",
                         mesh_name.c_str(), std::size_t(mesh.number_of_faces()), genus, r.source.c_str(), solver.c_str(),
-                        r.precision_major_p95, r.precision_all_p95, accuracy_line[0], r.recall_p95, r.recall_small_p95,
+                        r.precision_major_p95, r.precision_all_p95, precision_max, r.recall_p95, r.recall_small_p95,
                         ratio, rings, solves, winning, diagnose ? std::to_string(r.missing).c_str() : "-",
                         diagnose ? std::to_string(r.worst_excess).substr(0, 6).c_str() : "-",
                         diagnose ? std::to_string(r.ridge_front_errors).c_str() : "-", t_ridge);

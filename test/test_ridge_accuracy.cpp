@@ -225,23 +225,6 @@ namespace {
 
 typedef std::pair<Mesh::Face_index, std::array<double, 3> > Face_location;
 
-// random points inside faces (the vertex sources are floor(i V / n), as in
-// bench_ridge_accuracy)
-std::vector<Face_location> random_points(const Mesh& m, std::size_t n, unsigned seed)
-{
-  std::vector<Face_location> out;
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<std::size_t> face(0, m.number_of_faces() - 1);
-  std::uniform_real_distribution<double> unit(0.05, 0.95);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const double r1 = std::sqrt(unit(rng)), r2 = unit(rng);
-    out.emplace_back(Mesh::Face_index(static_cast<Mesh::size_type>(face(rng))),
-                     std::array<double, 3>{{1 - r1, r1 * (1 - r2), r1 * r2}});
-  }
-  return out;
-}
-
 template <class RidgeCurve>
 void require_every_shortest_path(const Mesh& m, const RidgeCurve& rc, const std::vector<double>& exact)
 {
@@ -278,7 +261,7 @@ TEST_CASE("the extended surface holds every shortest path, from many sources", "
     INFO(name << " source vertex " << std::size_t(s));
     require_every_shortest_path(m, Geodesic_ridge::compute_ridge_curve(m, s), GT::distances_on_mesh<K>(m, s, true));
   }
-  for(const Face_location& s : random_points(m, random, seed))
+  for(const Face_location& s : GT::random_face_locations(m, random, seed))
   {
     INFO(name << " source face " << std::size_t(s.first) << " (" << s.second[0] << ", " << s.second[1] << ", "
               << s.second[2] << ")");

@@ -151,18 +151,18 @@ struct Ridge_curve
 
 namespace internal {
 
-// Per face of M, the copies of E whose three corner distances are not all >=
-// those of another copy (a dominated copy never wins, paper §3.2.2).
+// Per face of M, the copies of E whose three corner distances (`corners`, per
+// face of E) are not all >= those of another copy (a dominated copy never
+// wins, paper §3.2.2).
 template <class Point>
-std::vector<Face_copies> undominated_copies(const Extended_surface<Point>& E, const std::vector<double>& distance,
+std::vector<Face_copies> undominated_copies(const Extended_surface<Point>& E,
+                                            const std::vector<std::array<double, 3> >& corners,
                                             std::size_t number_of_faces)
 {
   std::vector<Face_copies> face_copies(number_of_faces);
-  for(auto c : E.mesh.faces())
+  for(std::size_t c = 0; c < corners.size(); ++c)
   {
-    const auto h = E.mesh.halfedge(c);
-    const std::array<double, 3> d = {{distance[E.mesh.source(h)], distance[E.mesh.target(h)],
-                                      distance[E.mesh.target(E.mesh.next(h))]}};
+    const std::array<double, 3>& d = corners[c];
     Face_copies& fc = face_copies[E.original_face[c]];
     bool dominated = false;
     for(std::size_t i = 0; i < fc.fields.size() && !dominated; ++i)
@@ -206,20 +206,16 @@ inline bool lowest_somewhere_on_edge(double c0, double c1, const std::vector<std
   return false;
 }
 
-// The copies of E (by face index of E) that come within `slack` of the lowest
-// copy somewhere on one of their border edges, among the undominated copies of
-// both faces of M at that edge: their fronts may go on beyond E.
-template <class TriangleMesh, class FaceIndexMap, class Point>
-std::vector<char> copies_winning_on_border(const TriangleMesh& tm, FaceIndexMap fim, const Extended_surface<Point>& E,
-                                           const std::vector<Face_copies>& face_copies, double slack)
+// Per face of M (by index) and edge k (corner k to k+1): the face across it and
+// that edge's index there.
+typedef std::vector<std::array<std::pair<std::size_t, int>, 3> > Faces_across;
+template <class TriangleMesh, class FaceIndexMap>
+Faces_across faces_across(const TriangleMesh& tm, FaceIndexMap fim)
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
-  const std::size_t nf = num_faces(tm);
-  // per face of M and edge k (corner k to k+1): the face across and its edge there
-  std::vector<std::array<std::pair<std::size_t, int>, 3> > across(nf);
-  for(typename GT::face_descriptor f : faces(tm))
+  Faces_across across(num_faces(tm));
+  for(auto f : faces(tm))
   {
-    typename GT::halfedge_descriptor h = halfedge(f, tm);
+    auto h = halfedge(f, tm);
     for(int k = 0; k < 3; ++k, h = next(h, tm))
     {
       const auto o = opposite(h, tm);
@@ -229,6 +225,16 @@ std::vector<char> copies_winning_on_border(const TriangleMesh& tm, FaceIndexMap 
       across[get(fim, f)][k] = {static_cast<std::size_t>(get(fim, g)), kg};
     }
   }
+  return across;
+}
+
+// The copies of E (by face index of E) that come within `slack` of the lowest
+// copy somewhere on one of their border edges, among the undominated copies of
+// both faces of M at that edge: their fronts may go on beyond E.
+template <class Point>
+std::vector<char> copies_winning_on_border(const Faces_across& across, const Extended_surface<Point>& E,
+                                           const std::vector<Face_copies>& face_copies, double slack)
+{
   const auto& m = E.mesh;
   std::vector<char> winning(m.number_of_faces(), 0);
   std::vector<std::array<double, 2> > others;
@@ -307,6 +313,111 @@ std::vector<std::array<double, 3> > corner_distances(const Extended_surface<Poin
   return out;
 }
 
+// What drives the growth of E (the named parameters of the same names).
+struct Growth_schedule
+{
+  int extension_step, maximum_rings, maximum_solves;
+  bool predicted, guided;
+};
+
+// Stage 2b: grows E from the builder's rings by the growth rule and solves on
+// it; leaves E, the undominated copies of every face and the best copy of every
+// vertex from the last solve.
+template <class TriangleMesh, class FaceIndexMap, class VertexIndexMap, class Builder, class Solver, class Point>
+void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_source<TriangleMesh>& src,
+                    VertexIndexMap vim, Builder& builder, const Solver& solver, const Growth_schedule& schedule,
+                    double mean_edge, Extended_surface<Point>& E, std::vector<Face_copies>& face_copies,
+                    std::vector<double>& vertex_distances, Geodesic_ridge_statistics& st)
+{
+  const Faces_across across = faces_across(tm, fim);
+  // The growth rule (doc/manual.md, "The growth rule"): E grows a band of
+  // rings around every copy that still comes lowest somewhere on one of its
+  // border edges, until none does. A shortest path that leaves E crosses E's
+  // border where its front is exact, so no copy is lower there: without such
+  // copies E holds every shortest path. Passes on E decide the growth:
+  //  * predicted: fast marching from the source (cheap; most of the growth);
+  //  * solve: the solver (its distances make the ridge; its test is within
+  //    round-off for the exact solver);
+  //  * anchored: after a solve that still found such copies, fast marching on
+  //    the grown E seeded with the solver's distances on the copies it solved,
+  //    so that the growth follows the solver's fronts and the solver runs once
+  //    more, not once per band. Fast marching from the source misjudges which
+  //    front wins by up to half an edge (it has no pseudo-sources: fronts that
+  //    bend around saddle vertices come out late), far more than any slack
+  //    that would not grow E everywhere (teddy_3k v0: 36 rings short).
+  // With fast marching as the solver, its passes are the solves.
+  const double fast_marching_slack = 0.02 * mean_edge; // noise between neighbouring fronts
+  const double exact_slack_on_border = 1e-9 * mean_edge; // round-off
+  const bool solver_is_exact = std::is_same<std::decay_t<Solver>, Exact_solver>::value;
+  const bool solver_is_fast_marching = std::is_same<std::decay_t<Solver>, Fast_marching_solver>::value;
+  enum class Pass { predicted, solve, anchored };
+  Pass pass = schedule.predicted && !solver_is_fast_marching ? Pass::predicted : Pass::solve;
+  bool grown = true;
+  std::vector<std::array<double, 3> > anchor; // per copy, at the last solve: its corner distances
+  for(;;)
+  {
+    auto t0 = std::chrono::steady_clock::now();
+    if(grown) builder.materialize(E, src, vim, fim);
+    grown = false;
+    st.time_extension += seconds_since(t0);
+
+    t0 = std::chrono::steady_clock::now();
+    std::vector<double> distance(E.mesh.number_of_vertices());
+    if(pass == Pass::solve) { solve_on(E, solver, distance); ++st.solves; }
+    else if(pass == Pass::predicted) { solve_on(E, Fast_marching_solver(), distance); ++st.predicted_passes; }
+    else { fast_marching_from_anchors(E, anchor, distance); ++st.predicted_passes; }
+    st.time_solve += seconds_since(t0);
+    if(pass == Pass::solve && E.source_is_vertex && distance[E.source_vertex] != 0)
+      throw Algorithm_error("the solver's distance at the source is not 0");
+
+    t0 = std::chrono::steady_clock::now();
+    std::vector<std::array<double, 3> > corners = corner_distances(E, distance);
+    face_copies = undominated_copies(E, corners, num_faces(tm));
+    const double slack = pass == Pass::solve && solver_is_exact ? exact_slack_on_border : fast_marching_slack;
+    std::vector<char> grow_from = copies_winning_on_border(across, E, face_copies, slack);
+    const std::size_t winning = static_cast<std::size_t>(std::count(grow_from.begin(), grow_from.end(), 1));
+    st.time_envelope += seconds_since(t0);
+    if(pass == Pass::solve)
+    {
+      st.outer_copies_winning = winning;
+      vertex_distances = smallest_over_copies(E, distance, num_vertices(tm));
+      anchor = std::move(corners);
+    }
+
+    // grow a band of `extension_step` rings around them (each ring from the
+    // copies the previous one added), unless E is final
+    const bool solves_left = pass != Pass::solve || solver_is_fast_marching || st.solves < schedule.maximum_solves;
+    if(winning > 0 && solves_left && builder.statistics().rings < schedule.maximum_rings)
+    {
+      t0 = std::chrono::steady_clock::now();
+      const std::size_t before_band = builder.number_of_copies();
+      // a band of at least `extension_step` rings, and half the depth reached:
+      // a front that crossed a badly placed cut may win far beyond it (knot_3k
+      // v304: along the whole tube behind a rung), reached in O(log) passes
+      const int band = std::max(schedule.extension_step, builder.statistics().rings / 2);
+      for(int step = 0; step < band && builder.statistics().rings < schedule.maximum_rings; ++step)
+      {
+        const std::size_t before = builder.number_of_copies();
+        builder.grow_ring(&grow_from);
+        grow_from.assign(builder.number_of_copies(), 0);
+        for(std::size_t c = before; c < builder.number_of_copies(); ++c) grow_from[c] = 1;
+      }
+      if(schedule.guided) builder.grow_guided(schedule.maximum_rings);
+      grown = builder.number_of_copies() > before_band; // not at a leaf's winding bound
+      st.time_extension += seconds_since(t0);
+    }
+    if(grown)
+    {
+      if(pass == Pass::solve && !solver_is_fast_marching && schedule.predicted) pass = Pass::anchored;
+      continue;
+    }
+    // E is final for now: done if the solver has solved it, else solve
+    if(pass == Pass::solve || builder.number_of_copies() == anchor.size()) break;
+    pass = Pass::solve;
+  }
+  st.ring_cap_hit = st.outer_copies_winning > 0 && builder.statistics().rings >= schedule.maximum_rings;
+}
+
 template <class TriangleMesh, class NamedParameters>
 auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src, const NamedParameters& np)
 {
@@ -361,7 +472,6 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   st.rough_cut_locus = rcl.statistics;
   st.time_rough_cut_locus = seconds_since(t0);
 
-  const std::size_t nf = num_faces(tm);
   double mean_edge = 0;
   for(auto e : edges(tm)) mean_edge += distance_between(vpm, source(e, tm), target(e, tm));
   mean_edge /= static_cast<double>(num_edges(tm));
@@ -382,93 +492,8 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 
   Extended_surface<Point> E;
   std::vector<Face_copies> face_copies;
-  // The growth rule (doc/manual.md, "The growth rule"): E grows a band of
-  // rings around every copy that still comes lowest somewhere on one of its
-  // border edges, until none does. A shortest path that leaves E crosses E's
-  // border where its front is exact, so no copy is lower there: without such
-  // copies E holds every shortest path. Passes on E decide the growth:
-  //  * predicted: fast marching from the source (cheap; most of the growth);
-  //  * solve: the solver (its distances make the ridge; its test is within
-  //    round-off for the exact solver);
-  //  * anchored: after a solve that still found such copies, fast marching on
-  //    the grown E seeded with the solver's distances on the copies it solved,
-  //    so that the growth follows the solver's fronts and the solver runs once
-  //    more, not once per band. Fast marching from the source misjudges which
-  //    front wins by up to half an edge (it has no pseudo-sources: fronts that
-  //    bend around saddle vertices come out late), far more than any slack
-  //    that would not grow E everywhere (teddy_3k v0: 36 rings short).
-  // With fast marching as the solver, its passes are the solves.
-  const double fast_marching_slack = 0.02 * mean_edge; // noise between neighbouring fronts
-  const double exact_slack_on_border = 1e-9 * mean_edge; // round-off
-  const bool solver_is_exact = std::is_same<std::decay_t<decltype(solver)>, Exact_solver>::value;
-  const bool solver_is_fast_marching = std::is_same<std::decay_t<decltype(solver)>, Fast_marching_solver>::value;
-  enum class Pass { predicted, solve, anchored };
-  Pass pass = predicted && !solver_is_fast_marching ? Pass::predicted : Pass::solve;
-  bool grown = true;
-  std::size_t copies_at_last_solve = 0;
-  std::vector<std::array<double, 3> > anchor; // per copy, at the last solve: its corner distances
-  for(;;)
-  {
-    t0 = std::chrono::steady_clock::now();
-    if(grown) builder.materialize(E, src, vim, fim);
-    grown = false;
-    st.time_extension += seconds_since(t0);
-
-    t0 = std::chrono::steady_clock::now();
-    std::vector<double> distance(E.mesh.number_of_vertices());
-    if(pass == Pass::solve) { solve_on(E, solver, distance); ++st.solves; }
-    else if(pass == Pass::predicted) { solve_on(E, Fast_marching_solver(), distance); ++st.predicted_passes; }
-    else { fast_marching_from_anchors(E, anchor, distance); ++st.predicted_passes; }
-    st.time_solve += seconds_since(t0);
-    if(pass == Pass::solve && E.source_is_vertex && distance[E.source_vertex] != 0)
-      throw Algorithm_error("the solver's distance at the source is not 0");
-
-    t0 = std::chrono::steady_clock::now();
-    face_copies = undominated_copies(E, distance, nf);
-    const double slack = pass == Pass::solve && solver_is_exact ? exact_slack_on_border : fast_marching_slack;
-    std::vector<char> grow_from = copies_winning_on_border(tm, fim, E, face_copies, slack);
-    const std::size_t winning = static_cast<std::size_t>(std::count(grow_from.begin(), grow_from.end(), 1));
-    st.time_envelope += seconds_since(t0);
-    if(pass == Pass::solve)
-    {
-      st.outer_copies_winning = winning;
-      result.vertex_distances = smallest_over_copies(E, distance, num_vertices(tm));
-      anchor = corner_distances(E, distance);
-      copies_at_last_solve = builder.number_of_copies();
-    }
-
-    // grow a band of `extension_step` rings around them (each ring from the
-    // copies the previous one added), unless E is final
-    const bool solves_left = pass != Pass::solve || solver_is_fast_marching || st.solves < maximum_solves;
-    if(winning > 0 && solves_left && builder.statistics().rings < maximum_rings)
-    {
-      t0 = std::chrono::steady_clock::now();
-      const std::size_t before_band = builder.number_of_copies();
-      // a band of at least `extension_step` rings, and half the depth reached:
-      // a front that crossed a badly placed cut may win far beyond it (knot_3k
-      // v304: along the whole tube behind a rung), reached in O(log) passes
-      const int band = std::max(extension_step, builder.statistics().rings / 2);
-      for(int step = 0; step < band && builder.statistics().rings < maximum_rings; ++step)
-      {
-        const std::size_t before = builder.number_of_copies();
-        builder.grow_ring(&grow_from);
-        grow_from.assign(builder.number_of_copies(), 0);
-        for(std::size_t c = before; c < builder.number_of_copies(); ++c) grow_from[c] = 1;
-      }
-      if(guided) builder.grow_guided(maximum_rings);
-      grown = builder.number_of_copies() > before_band; // not at a leaf's winding bound
-      st.time_extension += seconds_since(t0);
-    }
-    if(grown)
-    {
-      if(pass == Pass::solve && !solver_is_fast_marching && predicted) pass = Pass::anchored;
-      continue;
-    }
-    // E is final for now: done if the solver has solved it, else solve
-    if(pass == Pass::solve || builder.number_of_copies() == copies_at_last_solve) break;
-    pass = Pass::solve;
-  }
-  st.ring_cap_hit = st.outer_copies_winning > 0 && builder.statistics().rings >= maximum_rings;
+  const Growth_schedule schedule{extension_step, maximum_rings, maximum_solves, predicted, guided};
+  grow_and_solve(tm, fim, src, vim, builder, solver, schedule, mean_edge, E, face_copies, result.vertex_distances, st);
   st.extended_surface = E.statistics;
 
   // Stage 2c + 3: exact envelopes and the ridge curve

@@ -251,8 +251,6 @@ public:
     find_shadowed_vertices(rcl);
   }
 
-  /// whether vertex `v` of M (by index) is on the cut graph K
-  bool on_cut(std::size_t v) const { return on_cut_[v] != 0; }
 
   /// Grows copies across the boundary of E, one face at a time in rings, while
   /// the front they continue is predicted (by unfolding) to be exact at a

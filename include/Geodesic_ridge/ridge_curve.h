@@ -266,30 +266,38 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
     }
   }
 
-  // A kink inside one sheet: copies glued across an edge whose gradients,
-  // unfolded across it, differ by at least `kink_angle`. Where the cut graph K
-  // lacks a branch of the cut locus, both fronts reach the faces along that
-  // branch inside one sheet of E, and only the kink shows the ridge there.
-  auto kinked = [&](std::size_t f1, int k1, std::size_t c1, std::size_t f2, int k2, std::size_t c2) {
-    if(kink_angle <= 0) return false;
+  // The jump of the gradient across edge k1 of face f1 (edge k2 of f2) between
+  // cells c1 and c2, the second unfolded into f1's plane: its size (strength)
+  // and its angle (degrees).
+  struct Jump { double strength, angle; };
+  auto edge_jump = [&](std::size_t f1, int k1, std::size_t c1, std::size_t f2, int k2, std::size_t c2) {
     const auto cp1 = corner_points(f1), cp2 = corner_points(f2);
     const auto g1 = field_gradient(cp1, cells[c1].field), g2 = field_gradient(cp2, cells[c2].field);
-    const Point& a = cp1[k1];
-    const Point& b = cp1[(k1 + 1) % 3];
-    double t[3] = {b.x() - a.x(), b.y() - a.y(), b.z() - a.z()};
+    const Point& pa = cp1[k1];
+    const Point& pb = cp1[(k1 + 1) % 3];
+    double t[3] = {pb.x() - pa.x(), pb.y() - pa.y(), pb.z() - pa.z()};
     const double tl = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
     for(double& x : t) x /= tl;
-    auto inward = [&](const Point& p, const Point& q) { // unit, in the face, normal to the edge, towards q
-      double w[3] = {q.x() - p.x(), q.y() - p.y(), q.z() - p.z()};
+    auto inward = [&](const Point& q) { // unit vector in the face of q, normal to the edge, towards q
+      double w[3] = {q.x() - pa.x(), q.y() - pa.y(), q.z() - pa.z()};
       const double along = w[0] * t[0] + w[1] * t[1] + w[2] * t[2];
       for(int j = 0; j < 3; ++j) w[j] -= along * t[j];
       const double l = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
       return std::array<double, 3>{{w[0] / l, w[1] / l, w[2] / l}};
     };
-    const auto m1 = inward(a, cp1[(k1 + 2) % 3]), m2 = inward(a, cp2[(k2 + 2) % 3]);
-    auto dot = [](const std::array<double, 3>& x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
-    return angle_between(dot(g1, t), dot(g1, m1.data()), dot(g2, t), -dot(g2, m2.data())) >= kink_angle;
+    const auto m1 = inward(cp1[(k1 + 2) % 3]), m2 = inward(cp2[(k2 + 2) % 3]);
+    auto dot = [](const std::array<double, 3>& a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    const double jt = dot(g1, t) - dot(g2, t);
+    const double jn = dot(g1, m1.data()) + dot(g2, m2.data());
+    // unfolded into f1's plane, g2 is (g2.t, -g2.m2) in the frame (t, m1)
+    return Jump{std::sqrt(jt * jt + jn * jn),
+                angle_between(dot(g1, t), dot(g1, m1.data()), dot(g2, t), -dot(g2, m2.data()))};
   };
+  // A kink inside one sheet: glued copies whose gradients jump by at least
+  // `kink_angle`. Where the cut graph K lacks a branch of the cut locus, both
+  // fronts reach the faces along that branch inside one sheet of E, and only
+  // the kink shows the ridge there.
+  auto kinked = [&](const Jump& j) { return kink_angle > 0 && j.angle >= kink_angle; };
 
   // ---- along mesh edges: split the edge by both sides' cell boundaries
   std::vector<char> edge_done(ne, 0);
@@ -312,7 +320,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       if(envelope_of[f1]->cells.size() == 1 && envelope_of[f2]->cells.size() == 1)
       {
         const std::size_t c1 = cells_of_face[f1][0], c2 = cells_of_face[f2][0];
-        if(glued_across(c1, k1, c2) && !kinked(f1, k1, c1, f2, k2, c2)) { fronts.unite(c1, c2); continue; }
+        if(glued_across(c1, k1, c2) && !kinked(edge_jump(f1, k1, c1, f2, k2, c2))) { fronts.unite(c1, c2); continue; }
       }
       // intervals (t along h1: from source(h1) to target(h1)) and the winning cell on each side
       struct Interval { Q lo, hi; std::size_t cell; };
@@ -340,7 +348,6 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
       for(const auto& i : side2) { cuts.push_back(i.lo); cuts.push_back(i.hi); }
       std::sort(cuts.begin(), cuts.end());
       cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-      const auto cp1 = corner_points(f1), cp2 = corner_points(f2);
       for(std::size_t i = 0; i + 1 < cuts.size(); ++i)
       {
         const Q mid = (cuts[i] + cuts[i + 1]) / 2;
@@ -349,27 +356,8 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
         for(const auto& iv : side2) if(iv.lo <= mid && mid <= iv.hi) { c2 = iv.cell; break; }
         if(c1 == std::size_t(-1) || c2 == std::size_t(-1)) continue;
         const bool glued = glued_across(c1, k1, c2);
-        // strength: jump of the gradient across the edge, unfolded
-        const auto g1 = field_gradient(cp1, cells[c1].field), g2 = field_gradient(cp2, cells[c2].field);
-        const auto pa = get(vpm, source(h1, tm)), pb = get(vpm, target(h1, tm));
-        double t[3] = {pb.x() - pa.x(), pb.y() - pa.y(), pb.z() - pa.z()};
-        const double tl = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-        for(double& x : t) x /= tl;
-        auto inward = [&](const std::array<Point, 3>& cp, int k) { // unit vector in the face, normal to edge k
-          const Point& a = cp[k]; const Point& c = cp[(k + 2) % 3];
-          double w[3] = {c.x() - a.x(), c.y() - a.y(), c.z() - a.z()};
-          const double along = w[0] * t[0] + w[1] * t[1] + w[2] * t[2];
-          for(int j = 0; j < 3; ++j) w[j] -= along * t[j];
-          const double l = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-          return std::array<double, 3>{{w[0] / l, w[1] / l, w[2] / l}};
-        };
-        const auto m1 = inward(cp1, k1), m2 = inward(cp2, k2);
-        auto dot = [](const std::array<double, 3>& a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-        const double jt = dot(g1, t) - dot(g2, t);
-        const double jn = dot(g1, m1.data()) + dot(g2, m2.data());
-        const double strength = std::sqrt(jt * jt + jn * jn);
-        // unfolded into f1's plane, g2 is (g2.t, -g2.m2) in the frame (t, m1)
-        const double angle = angle_between(dot(g1, t), dot(g1, m1.data()), dot(g2, t), -dot(g2, m2.data()));
+        const Jump jump = edge_jump(f1, k1, c1, f2, k2, c2);
+        const double strength = jump.strength, angle = jump.angle;
         // one front across the edge: equal values along it and no real gradient
         // jump (below the spur angle: copies of one front, one slightly inexact
         // off the edge). Equal values alone are no test: where the ridge runs
@@ -383,7 +371,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
                            std::abs(value(cells[c1], k1, cuts[i + 1]) - value(cells[c2], k2, Q(1) - cuts[i + 1])) <=
                                same_front_tolerance &&
                            (strength <= 1e-6 || angle < minimum_angle);
-        if((glued && !(kink_angle > 0 && angle >= kink_angle)) || equal) { fronts.unite(c1, c2); continue; }
+        if((glued && !kinked(jump)) || equal) { fronts.unite(c1, c2); continue; }
         // the two edge points, from f1's side
         std::array<Q, 3> la = {{Q(0), Q(0), Q(0)}}, lb = la;
         la[k1] = Q(1) - cuts[i]; la[(k1 + 1) % 3] = cuts[i];

@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -55,6 +56,27 @@ std::vector<double> distances_on_mesh(const TriangleMesh& tm, const Source& sour
     Fast_marching_solver()(tm, source, map);
   }
   return d;
+}
+
+/// `n` random points inside faces of `tm` as `Face_location`s: a face drawn
+/// uniformly by index, a point uniform on it (`std::mt19937(seed)`).
+template <class TriangleMesh>
+std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor, std::array<double, 3> > >
+random_face_locations(const TriangleMesh& tm, std::size_t n, unsigned seed)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  std::vector<face_descriptor> face_of(num_faces(tm));
+  for(auto f : faces(tm)) face_of[std::size_t(get(CGAL::face_index, tm, f))] = f;
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<std::size_t> face(0, face_of.size() - 1);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<std::pair<face_descriptor, std::array<double, 3> > > out;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double r1 = std::sqrt(unit(rng)), r2 = unit(rng);
+    out.emplace_back(face_of[face(rng)], std::array<double, 3>{{1 - r1, r1 * (1 - r2), r1 * r2}});
+  }
+  return out;
 }
 
 /// What `check_extension` found.
