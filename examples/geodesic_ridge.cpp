@@ -4,7 +4,11 @@
 //
 //   geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z)
 //                  [--tolerance T] [--solver exact|fmm] [--ridge OUT.polylines.txt]
-//                  [--rough-cut OUT.polylines.txt] [--stats OUT.json]
+//                  [--ridge-locations OUT.txt] [--rough-cut OUT.polylines.txt]
+//                  [--refined OUT.ply [--ply-ascii]]
+//                  [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]
+//                  [--query IN.txt [--query-barycentric] --query-out OUT.txt]
+//                  [--stats OUT.json] [--png OUT.png]
 //
 // Exit status: 0 success, 1 bad input (mesh, source, parameter), 2 bad command
 // line, 3 internal error. Every error is one line on stderr.
@@ -12,15 +16,20 @@
 #include <Geodesic_ridge/IO/polylines.h>
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/distance_field.h>
+#include <Geodesic_ridge/isolines.h>
+#include <Geodesic_ridge/refined_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/bounding_box.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -44,7 +53,11 @@ struct Usage_error : std::runtime_error
 const char* usage_text =
     "usage: geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z)\n"
     "                      [--tolerance T] [--solver exact|fmm] [--ridge OUT.polylines.txt]\n"
-    "                      [--rough-cut OUT.polylines.txt] [--stats OUT.json] [--png OUT.png]\n"
+    "                      [--ridge-locations OUT.txt] [--rough-cut OUT.polylines.txt]\n"
+    "                      [--refined OUT.ply [--ply-ascii]]\n"
+    "                      [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]\n"
+    "                      [--query IN.txt [--query-barycentric] --query-out OUT.txt]\n"
+    "                      [--stats OUT.json] [--png OUT.png]\n"
     "  MESH              closed, connected, manifold triangle mesh (.off, .obj, .ply)\n"
     "  --source-vertex V source at vertex V (0-based, file order)\n"
     "  --source-point FACE X Y Z\n"
@@ -54,10 +67,27 @@ const char* usage_text =
     "                    Surface_mesh_shortest_path, default) or fmm (fast marching,\n"
     "                    first order; heat and dijkstra are not in this version)\n"
     "  --ridge OUT       write the ridge curve as CGAL polylines (n x1 y1 z1 ... per line)\n"
+    "  --ridge-locations OUT\n"
+    "                    write every ridge point as 'FACE B0 B1 B2 ANGLE' (barycentric in the\n"
+    "                    file order of the face's vertices; ANGLE: degrees between the fronts)\n"
+    "  --refined OUT.ply the ridge-refined mesh: faces the ridge crosses split along it, a\n"
+    "                    'distance' per vertex, a 'source_face' per face (binary PLY;\n"
+    "                    --ply-ascii for ASCII)\n"
+    "  --isolines N OUT  N iso-lines equally spaced strictly between 0 and the largest\n"
+    "                    distance, as CGAL polylines, from the region-wise field\n"
+    "  --isoline-values a,b,c OUT\n"
+    "                    iso-lines at the given distances\n"
+    "  --isolines-from-vertices\n"
+    "                    iso-lines from linear interpolation of the vertex distances instead\n"
+    "  --query IN.txt    distance queries, one per line: 'FACE X Y Z' (a point of the face,\n"
+    "                    within 1e-7 of its size), or with --query-barycentric 'FACE B0 B1 B2'\n"
+    "                    (summing to 1 within 1e-9); '#' starts a comment\n"
+    "  --query-out OUT   the distances, one per line in the order of IN, 17 digits\n"
     "  --rough-cut OUT   write the rough cut locus K (stage 1) as CGAL polylines\n"
     "  --stats OUT.json  write counts, timings and parameters as JSON\n"
-    "  --png OUT.png     picture: the mesh from two opposite sides, the ridge in red,\n"
-    "                    the rough cut locus in blue, the source in green\n";
+    "  --png OUT.png     picture: the mesh from two opposite sides coloured by the distance\n"
+    "                    (viridis, dark bands at 20 levels), the ridge in red, the rough\n"
+    "                    cut locus in white, the source in green\n";
 
 std::size_t parse_index(const std::string& what, const std::string& s)
 {
@@ -88,9 +118,30 @@ struct Options
   std::string source_face_text;
   std::array<std::string, 3> source_point_text;
   double tolerance = Geodesic_ridge::default_tolerance;
-  std::string rough_cut, stats, ridge, png;
+  std::string rough_cut, stats, ridge, png, ridge_locations, refined;
+  bool ply_ascii = false;
   std::string solver = "exact";
+  std::string isolines;                   // output file
+  std::optional<std::size_t> isoline_count;
+  std::vector<double> isoline_values;
+  bool isolines_from_vertices = false;
+  std::string query, query_out;
+  bool query_barycentric = false;
 };
+
+std::vector<double> parse_values(const std::string& s)
+{
+  std::vector<double> values;
+  std::size_t start = 0;
+  for(;;)
+  {
+    const std::size_t comma = s.find(',', start);
+    values.push_back(parse_number("iso-line value", s.substr(start, comma == std::string::npos ? comma : comma - start)));
+    if(comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return values;
+}
 
 Options parse(int argc, char** argv)
 {
@@ -121,6 +172,26 @@ Options parse(int argc, char** argv)
     else if(a == "--tolerance") { tolerance_text = value(i, a); have_tolerance = true; }
     else if(a == "--rough-cut") o.rough_cut = value(i, a);
     else if(a == "--ridge") o.ridge = value(i, a);
+    else if(a == "--ridge-locations") o.ridge_locations = value(i, a);
+    else if(a == "--refined") o.refined = value(i, a);
+    else if(a == "--ply-ascii") o.ply_ascii = true;
+    else if(a == "--isolines" || a == "--isoline-values")
+    {
+      if(!o.isolines.empty()) throw Usage_error("give --isolines or --isoline-values once");
+      if(i + 2 >= args.size()) throw Usage_error("option " + a + " needs a value and an output file");
+      const std::string& v = args[++i];
+      if(a == "--isolines")
+      {
+        o.isoline_count = parse_index("iso-line count", v);
+        if(*o.isoline_count == 0) throw Geodesic_ridge::Invalid_parameter_error("iso-line count must be positive");
+      }
+      else o.isoline_values = parse_values(v);
+      o.isolines = args[++i];
+    }
+    else if(a == "--isolines-from-vertices") o.isolines_from_vertices = true;
+    else if(a == "--query") o.query = value(i, a);
+    else if(a == "--query-out") o.query_out = value(i, a);
+    else if(a == "--query-barycentric") o.query_barycentric = true;
     else if(a == "--png") o.png = value(i, a);
     else if(a == "--solver")
     {
@@ -138,6 +209,10 @@ Options parse(int argc, char** argv)
   if(o.mesh.empty()) throw Usage_error("missing the MESH argument");
   if(!o.source_vertex && !o.source_face)
     throw Usage_error("missing the source: --source-vertex V or --source-point FACE X Y Z");
+  if(o.query.empty() != o.query_out.empty()) throw Usage_error("--query and --query-out go together");
+  if(o.query_barycentric && o.query.empty()) throw Usage_error("--query-barycentric needs --query");
+  if(o.isolines_from_vertices && o.isolines.empty()) throw Usage_error("--isolines-from-vertices needs --isolines or --isoline-values");
+  if(o.ply_ascii && o.refined.empty()) throw Usage_error("--ply-ascii needs --refined");
   if(have_tolerance) o.tolerance = parse_number("tolerance", tolerance_text);
   // a bad tolerance is reported before the mesh is read
   Geodesic_ridge::internal::get_tolerance(Geodesic_ridge::parameters::tolerance(o.tolerance));
@@ -146,7 +221,8 @@ Options parse(int argc, char** argv)
 
 // The point (x,y,z) of face f as barycentric coordinates (CGAL's order). The
 // point must lie on the face up to round-off; tiny negative weights are clamped.
-std::array<double, 3> locate_in_face(const Mesh& m, face_descriptor f, const Point_3& q)
+std::array<double, 3> locate_in_face(const Mesh& m, face_descriptor f, const Point_3& q,
+                                     const std::string& what = "source point")
 {
   const auto h = m.halfedge(f);
   const Point_3 a = m.point(m.source(h)), b = m.point(m.target(h)),
@@ -164,7 +240,7 @@ std::array<double, 3> locate_in_face(const Mesh& m, face_descriptor f, const Poi
   {
     std::ostringstream s;
     s.precision(17);
-    s << "source point (" << q << ") is not on face " << std::size_t(f);
+    s << what << " (" << q << ") is not on face " << std::size_t(f);
     throw Geodesic_ridge::Invalid_source_error(s.str());
   }
   std::array<double, 3> w = {std::max(wa, 0.), std::max(wb, 0.), std::max(wc, 0.)};
@@ -201,7 +277,74 @@ std::string json_string(const std::string& x)
 
 typedef Geodesic_ridge::Ridge_curve<Mesh, Point_3> Ridge;
 
-void write_stats(const std::string& filename, const Options& o, const Ridge& rc, double read_seconds)
+// The reader adds each face (v0, v1, v2) of the file with CGAL::Euler::add_face,
+// whose halfedge(f) runs from v2 to v0: a Face_location's corners are (v2, v0,
+// v1). These convert barycentric coordinates between the two orders.
+std::array<double, 3> file_order_to_location(const std::array<double, 3>& b) { return {{b[2], b[0], b[1]}}; }
+std::array<double, 3> location_to_file_order(const std::array<double, 3>& l) { return {{l[1], l[2], l[0]}}; }
+
+// One query per line of `filename`: "FACE X Y Z" or, barycentric, "FACE B0 B1
+// B2"; '#' starts a comment. Errors name the line.
+std::vector<std::pair<face_descriptor, std::array<double, 3> > > read_queries(const std::string& filename,
+                                                                             const Mesh& mesh, bool barycentric)
+{
+  std::ifstream is(filename);
+  if(!is) throw Geodesic_ridge::Invalid_parameter_error("cannot open query file '" + filename + "'");
+  std::vector<std::pair<face_descriptor, std::array<double, 3> > > queries;
+  std::string line;
+  for(std::size_t number = 1; std::getline(is, line); ++number)
+  {
+    const std::string where = "query file '" + filename + "' line " + std::to_string(number) + ": ";
+    const std::size_t hash = line.find('#');
+    if(hash != std::string::npos) line.erase(hash);
+    std::istringstream tokens(line);
+    std::vector<std::string> t;
+    for(std::string x; tokens >> x;) t.push_back(x);
+    if(t.empty()) continue;
+    try
+    {
+      if(t.size() != 4)
+        throw Geodesic_ridge::Invalid_parameter_error(std::string("expected 'FACE ") +
+                                                      (barycentric ? "B0 B1 B2'" : "X Y Z'") + ", got " +
+                                                      std::to_string(t.size()) + " fields");
+      const std::size_t face = parse_index("face", t[0]);
+      if(face >= mesh.number_of_faces())
+        throw Geodesic_ridge::Invalid_parameter_error("face " + t[0] + " is out of range: the mesh has " +
+                                                      std::to_string(mesh.number_of_faces()) + " faces");
+      const face_descriptor f{static_cast<Mesh::size_type>(face)};
+      std::array<double, 3> v;
+      for(int k = 0; k < 3; ++k) v[k] = parse_number("coordinate", t[k + 1]);
+      if(barycentric)
+      {
+        const double sum = v[0] + v[1] + v[2];
+        if(std::abs(sum - 1) > 1e-9 || v[0] < -1e-9 || v[1] < -1e-9 || v[2] < -1e-9)
+          throw Geodesic_ridge::Invalid_parameter_error(
+              "barycentric coordinates must be >= 0 and sum to 1 within 1e-9");
+        for(double& x : v) x = std::max(x, 0.);
+        queries.emplace_back(f, file_order_to_location(v));
+      }
+      else
+        queries.emplace_back(f, locate_in_face(mesh, f, Point_3(v[0], v[1], v[2]), "point"));
+    }
+    catch(const Geodesic_ridge::Error& e)
+    {
+      throw Geodesic_ridge::Invalid_parameter_error(where + e.what());
+    }
+  }
+  if(is.bad()) throw Geodesic_ridge::Invalid_parameter_error("cannot read query file '" + filename + "'");
+  return queries;
+}
+
+template <class Lines>
+void write_isolines(const std::string& filename, const Lines& lines)
+{
+  std::vector<std::vector<Point_3> > polylines;
+  for(const auto& l : lines) polylines.push_back(l.points);
+  Geodesic_ridge::IO::write_polylines(filename, polylines);
+}
+
+void write_stats(const std::string& filename, const Options& o, const Ridge& rc, double read_seconds,
+                 const Geodesic_ridge::Refined_mesh_statistics* refined)
 {
   const auto& r = rc.rough_cut_locus;
   const auto& s = r.statistics;
@@ -278,7 +421,14 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
      << "    \"pruned_spur_segments\": " << q.pruned_spur_segments << ",\n"
      << "    \"pruned_flat_end_segments\": " << q.pruned_flat_end_segments << ",\n"
      << "    \"dropped_components\": " << q.dropped_components << "\n"
-     << "  },\n"
+     << "  },\n";
+  if(refined)
+    os << "  \"refined_mesh\": {\"vertices\": " << refined->vertices << ", \"faces\": " << refined->faces
+       << ", \"split_faces\": " << refined->split_faces << ", \"centre_vertices\": " << refined->centre_vertices
+       << ", \"ridge_edges\": " << refined->ridge_edges
+       << ", \"unmatched_ridge_segments\": " << refined->unmatched_ridge_segments
+       << ", \"largest_disagreement\": " << json_number(refined->largest_disagreement) << "},\n";
+  os
      << "  \"timings_seconds\": {\n"
      << "    \"read_and_validate\": " << json_number(read_seconds) << ",\n"
      << "    \"tree_distances\": " << json_number(g.time_solve_on_mesh) << ",\n"
@@ -304,6 +454,9 @@ int run(const Options& o)
   Mesh mesh;
   Geodesic_ridge::IO::read_triangle_mesh(o.mesh, mesh);
   const double read_seconds = Geodesic_ridge::internal::seconds_since(t0);
+  // bad queries are reported before the ridge is computed
+  const auto queries = o.query.empty() ? std::vector<std::pair<face_descriptor, std::array<double, 3> > >()
+                                       : read_queries(o.query, mesh, o.query_barycentric);
 
   namespace p = Geodesic_ridge::parameters;
   // the solver is a type: one call per model
@@ -349,6 +502,101 @@ int run(const Options& o)
             << "ridge: " << ridge->polylines.size() << " polylines, " << g.ridge.junctions << " junctions, "
             << g.ridge.free_ends << " free ends, " << g.ridge.cycles << " cycles, length "
             << g.ridge.total_length << "; " << g.time_total << " s\n";
+  // the region-wise field, and the refined mesh where something needs it
+  const auto field = Geodesic_ridge::make_distance_field(mesh, *ridge);
+  Mesh refined;
+  std::optional<Geodesic_ridge::Refined_mesh_statistics> refined_stats;
+  auto refined_distance = refined.add_property_map<vertex_descriptor, double>("v:distance", 0).first;
+  if(!o.refined.empty() || !o.png.empty() || (!o.isolines.empty() && !o.isolines_from_vertices))
+  {
+    auto source_face = refined.add_property_map<face_descriptor, std::int32_t>("f:source_face", -1).first;
+    auto on_ridge = refined.add_property_map<Mesh::Edge_index, bool>("e:ridge", false).first;
+    struct Record_source_face
+    {
+      Mesh::Property_map<face_descriptor, std::int32_t> map;
+      void face_created(face_descriptor original, face_descriptor created)
+      { map[created] = static_cast<std::int32_t>(std::size_t(original)); }
+    } visitor{source_face};
+    refined_stats = Geodesic_ridge::refine_mesh_along_ridge(
+        mesh, *ridge, refined, CGAL::parameters::default_values(),
+        Geodesic_ridge::parameters::vertex_distance_map(refined_distance)
+            .edge_is_constrained_map(on_ridge)
+            .visitor(visitor));
+    std::cout << "refined mesh: " << refined_stats->faces << " faces (" << refined_stats->split_faces
+              << " faces of the mesh split), largest disagreement " << refined_stats->largest_disagreement << "\n";
+    if(refined_stats->unmatched_ridge_segments > 0)
+      throw Geodesic_ridge::Algorithm_error(std::to_string(refined_stats->unmatched_ridge_segments) +
+                                            " ridge segments are not edges of the refined mesh");
+  }
+  if(!o.refined.empty())
+  {
+    std::ofstream os(o.refined, std::ios::binary);
+    if(!os) throw Geodesic_ridge::Error("cannot open '" + o.refined + "' for writing");
+    if(o.ply_ascii) CGAL::IO::set_ascii_mode(os);
+    else CGAL::IO::set_binary_mode(os);
+    // the ridge flags stay in memory: PLY readers disagree on edge elements
+    Mesh copy = refined;
+    auto ridge_flags = copy.property_map<Mesh::Edge_index, bool>("e:ridge").first;
+    copy.remove_property_map(ridge_flags);
+    os.precision(17);
+    if(!CGAL::IO::write_PLY(os, copy, "geodesic distance field, refined along the geodesic ridge") || !os)
+      throw Geodesic_ridge::Error("cannot write '" + o.refined + "'");
+    std::cout << "wrote " << o.refined << " (" << refined.number_of_faces() << " faces, vertex property 'distance', "
+              << "face property 'source_face')\n";
+  }
+  if(!o.ridge_locations.empty())
+  {
+    std::ofstream os(o.ridge_locations);
+    if(!os) throw Geodesic_ridge::Error("cannot open '" + o.ridge_locations + "' for writing");
+    os << "# FACE B0 B1 B2 ANGLE: a ridge point, barycentric in the file order of the face's vertices;\n"
+          "# ANGLE: degrees between the two fronts; one polyline after another, '# polyline' between\n";
+    os.precision(17);
+    std::size_t points = 0;
+    for(const auto& pl : ridge->polylines)
+    {
+      os << "# polyline\n";
+      for(const auto& p : pl)
+      {
+        const auto b = location_to_file_order(p.barycentric);
+        os << p.face << ' ' << b[0] << ' ' << b[1] << ' ' << b[2] << ' ' << p.angle << '\n';
+        ++points;
+      }
+    }
+    os.flush();
+    if(!os) throw Geodesic_ridge::Error("cannot write '" + o.ridge_locations + "'");
+    std::cout << "wrote " << o.ridge_locations << " (" << points << " ridge points)\n";
+  }
+  if(!o.query.empty())
+  {
+    std::vector<double> distances;
+    distances.reserve(queries.size());
+    field.distances(queries, std::back_inserter(distances));
+    std::ofstream os(o.query_out);
+    if(!os) throw Geodesic_ridge::Error("cannot open '" + o.query_out + "' for writing");
+    os.precision(17);
+    for(double d : distances) os << d << '\n';
+    os.flush();
+    if(!os) throw Geodesic_ridge::Error("cannot write '" + o.query_out + "'");
+    std::cout << "wrote " << o.query_out << " (" << distances.size() << " distances)\n";
+  }
+  if(!o.isolines.empty())
+  {
+    std::vector<Geodesic_ridge::Isoline<Point_3> > lines;
+    const Mesh& contoured = o.isolines_from_vertices ? mesh : refined;
+    auto vertex_distance = [&](vertex_descriptor v) {
+      return o.isolines_from_vertices ? field.distance(v) : refined_distance[v];
+    };
+    double largest = 0;
+    for(vertex_descriptor v : contoured.vertices()) largest = std::max(largest, vertex_distance(v));
+    const std::vector<double> levels =
+        o.isoline_count ? Geodesic_ridge::equally_spaced_levels(*o.isoline_count, largest) : o.isoline_values;
+    std::vector<double> values(contoured.number_of_vertices());
+    for(vertex_descriptor v : contoured.vertices()) values[std::size_t(v)] = vertex_distance(v);
+    Geodesic_ridge::isolines(contoured, CGAL::make_property_map(values), levels, std::back_inserter(lines));
+    write_isolines(o.isolines, lines);
+    std::cout << "wrote " << o.isolines << " (" << lines.size() << " iso-lines at " << levels.size() << " levels, from "
+              << (o.isolines_from_vertices ? "the vertex distances" : "the region-wise field") << ")\n";
+  }
   if(!o.ridge.empty())
   {
     std::vector<std::vector<Point_3> > polylines;
@@ -371,7 +619,7 @@ int run(const Options& o)
   {
     std::vector<Geodesic_ridge::IO::Png_curves<Point_3> > curves(3);
     Geodesic_ridge::cut_graph_polylines(mesh, r, std::back_inserter(curves[0].polylines));
-    curves[0].rgb = {{60, 90, 230}};
+    curves[0].rgb = {{235, 235, 235}};
     curves[0].width_pixels = 1;
     for(const auto& pl : ridge->polylines)
     {
@@ -397,12 +645,14 @@ int run(const Options& o)
     }
     curves[2].rgb = {{20, 170, 40}};
     curves[2].width_pixels = 5;
-    Geodesic_ridge::IO::write_png(o.png, mesh, mesh.points(), curves);
+    double largest = 0;
+    for(vertex_descriptor v : refined.vertices()) largest = std::max(largest, refined_distance[v]);
+    Geodesic_ridge::IO::write_png(o.png, refined, refined.points(), refined_distance, largest, 20, curves);
     std::cout << "wrote " << o.png << "\n";
   }
   if(!o.stats.empty())
   {
-    write_stats(o.stats, o, *ridge, read_seconds);
+    write_stats(o.stats, o, *ridge, read_seconds, refined_stats ? &*refined_stats : nullptr);
     std::cout << "wrote " << o.stats << "\n";
   }
   return 0;

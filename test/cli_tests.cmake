@@ -66,3 +66,22 @@ foreach(mesh_genus bunny_1k:0 eight:2)
                    "-DEXTRA=--solver;fmm" -DOUT=${OUTDIR} -DGENUS=${genus}
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
 endforeach()
+
+# The region-wise field: queries, refined mesh, iso-lines, ridge locations,
+# with both solvers; and bad query files.
+foreach(solver exact fmm)
+  add_test(NAME cli.field.${solver}
+           COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off -DDATA=${B} -DOUT=${OUTDIR}/${solver}
+                   "-DEXTRA=--solver;${solver}" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_field_outputs.cmake)
+endforeach()
+set(Q ${D}/torus_1k.off --source-vertex 0 --query-out ${OUTDIR}/q.txt --query)
+cli_failure(query_bad_face        "line 1: face 5000 is out of range" ${CLI} ${Q} ${B}/queries_bad_face.txt)
+cli_failure(query_malformed       "line 2: expected 'FACE X Y Z', got 3 fields" ${CLI} ${Q} ${B}/queries_malformed.txt)
+cli_failure(query_nan             "line 1: coordinate 'nan' is not a finite number" ${CLI} ${Q} ${B}/queries_nan.txt)
+cli_failure(query_off_face        "line 1: point .* is not on face 0" ${CLI} ${Q} ${B}/queries_off_face.txt)
+cli_failure(query_bad_sum         "line 1: barycentric coordinates must be >= 0 and sum to 1" ${CLI} ${Q} ${B}/queries_bad_sum.txt --query-barycentric)
+cli_failure(query_missing_file    "cannot open query file" ${CLI} ${Q} ${B}/no_such_queries.txt)
+cli_failure(query_without_out     "--query and --query-out go together" ${CLI} ${D}/torus_1k.off --source-vertex 0 --query ${B}/queries_nan.txt)
+cli_failure(isolines_zero         "iso-line count must be positive" ${CLI} ${D}/torus_1k.off --source-vertex 0 --isolines 0 ${OUTDIR}/i.txt)
+cli_failure(isoline_values_bad    "iso-line value 'x' is not a finite number" ${CLI} ${D}/torus_1k.off --source-vertex 0 --isoline-values 0.1,x ${OUTDIR}/i.txt)
+cli_failure(unwritable_refined    "cannot open" ${CLI} ${D}/torus_1k.off --source-vertex 0 --refined /nonexistent-dir/x.ply)

@@ -34,13 +34,17 @@ namespace Geodesic_ridge {
 
 /// \ingroup PkgGeodesicRidgeRef
 /// A point of the ridge: its surface location in M (face index, barycentric
-/// coordinates in CGAL's order) and its 3D point.
+/// coordinates in CGAL's order), its 3D point, and the angle between the two
+/// fronts that meet there.
 template <class Point_3>
 struct Ridge_point
 {
   std::size_t face = 0;
   std::array<double, 3> barycentric = {{0, 0, 0}};
   Point_3 point;
+  /// degrees: the largest angle between the arrival directions of the two
+  /// fronts over the ridge segments at this point
+  double angle = 0;
 };
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -530,6 +534,8 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
     {
       graph.emplace_back(s.a, s.b);
       ++degree[s.a]; ++degree[s.b];
+      nodes[s.a].angle = std::max(nodes[s.a].angle, s.angle);
+      nodes[s.b].angle = std::max(nodes[s.b].angle, s.angle);
       st.total_length += length(s);
     }
   st.ridge_segments = graph.size();

@@ -105,15 +105,15 @@ inline void write_rgb_png(const std::string& filename, int w, int h, const std::
 
 } // namespace internal_png
 
-/// \ingroup PkgGeodesicRidgeIO
-/// Renders the triangle mesh (grey, Lambert-shaded) and the curves on it from
-/// two opposite directions (left: looking along -view, right: along +view), and
-/// writes a PNG of `2*size` × `size` pixels. Curves are drawn where they are
-/// not hidden by the surface (a small depth offset keeps curves on it visible).
-template <class TriangleMesh, class VertexPointMap, class Point_3>
-void write_png(const std::string& filename, const TriangleMesh& tm, VertexPointMap vpm,
-               const std::vector<Png_curves<Point_3> >& curves, int size = 600,
-               std::array<double, 3> view = {{0.3, -0.4, -1.0}})
+namespace internal_png {
+
+// Draws the mesh, coloured by colour(halfedge of the face, w0, w1, w2, shade)
+// at each pixel (w: the weights of source(h), target(h), target(next(h))), and
+// the curves over it.
+template <class TriangleMesh, class VertexPointMap, class Point_3, class Colour>
+void render(const std::string& filename, const TriangleMesh& tm, VertexPointMap vpm,
+            const std::vector<Png_curves<Point_3> >& curves, int size, std::array<double, 3> view,
+            const Colour& colour)
 {
   typedef std::array<double, 3> V3;
   auto sub = [](const V3& a, const V3& b) { return V3{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; };
@@ -178,8 +178,8 @@ void write_png(const std::string& filename, const TriangleMesh& tm, VertexPointM
           const std::size_t i = static_cast<std::size_t>(y * W + x);
           if(z >= depth[i]) continue;
           depth[i] = z;
-          const unsigned char g = static_cast<unsigned char>(255 * std::min(1.0, shade));
-          rgb[3 * i] = g; rgb[3 * i + 1] = g; rgb[3 * i + 2] = static_cast<unsigned char>(std::min(255, g + 12));
+          const auto c = colour(h, w0, w1, w2, shade);
+          rgb[3 * i] = c[0]; rgb[3 * i + 1] = c[1]; rgb[3 * i + 2] = c[2];
         }
     }
     const double offset = 0.01 * radius;
@@ -207,7 +207,75 @@ void write_png(const std::string& filename, const TriangleMesh& tm, VertexPointM
           }
         }
   }
-  internal_png::write_rgb_png(filename, W, H, rgb);
+  write_rgb_png(filename, W, H, rgb);
+}
+
+} // namespace internal_png
+
+/// \ingroup PkgGeodesicRidgeIO
+/// Renders the triangle mesh (grey, Lambert-shaded) and the curves on it from
+/// two opposite directions (left: looking along -view, right: along +view), and
+/// writes a PNG of `2*size` × `size` pixels. Curves are drawn where they are
+/// not hidden by the surface (a small depth offset keeps curves on it visible).
+template <class TriangleMesh, class VertexPointMap, class Point_3>
+void write_png(const std::string& filename, const TriangleMesh& tm, VertexPointMap vpm,
+               const std::vector<Png_curves<Point_3> >& curves, int size = 600,
+               std::array<double, 3> view = {{0.3, -0.4, -1.0}})
+{
+  auto grey = [](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, double, double, double,
+                 double shade) {
+    const unsigned char g = static_cast<unsigned char>(255 * std::min(1.0, shade));
+    return std::array<unsigned char, 3>{{g, g, static_cast<unsigned char>(std::min(255, g + 12))}};
+  };
+  internal_png::render(filename, tm, vpm, curves, size, view, grey);
+}
+
+/// \ingroup PkgGeodesicRidgeIO
+/// The viridis colour map (a perceptual one) at t in [0, 1], as a polynomial fit.
+inline std::array<double, 3> viridis(double t)
+{
+  t = std::max(0.0, std::min(1.0, t));
+  static const double c[7][3] = {{0.2777273272234177, 0.005407344544966578, 0.3340998053353061},
+                                 {0.1050930431085774, 1.404613529898575, 1.384590162594685},
+                                 {-0.3308618287255563, 0.214847559468213, 0.09509516302823659},
+                                 {-4.634230498983486, -5.799100973351585, -19.33244095627987},
+                                 {6.228269936347081, 14.17993336680509, 56.69055260068105},
+                                 {4.776384997670288, -13.74514537774601, -65.35303263337234},
+                                 {-5.435455855934631, 4.645852612178535, 26.3124352495832}};
+  std::array<double, 3> rgb = {{0, 0, 0}};
+  for(int k = 0; k < 3; ++k)
+  {
+    double v = 0;
+    for(int i = 6; i >= 0; --i) v = v * t + c[i][k];
+    rgb[k] = std::max(0.0, std::min(1.0, v));
+  }
+  return rgb;
+}
+
+/// \ingroup PkgGeodesicRidgeIO
+/// Same as above, with the surface coloured by the field that interpolates
+/// `values` (a vertex property map of doubles) linearly on each face: viridis
+/// from 0 to `largest`, darkened in thin bands at `bands` equally spaced
+/// levels, so that iso-lines show.
+template <class TriangleMesh, class VertexPointMap, class VertexValueMap, class Point_3>
+void write_png(const std::string& filename, const TriangleMesh& tm, VertexPointMap vpm, VertexValueMap values,
+               double largest, int bands, const std::vector<Png_curves<Point_3> >& curves, int size = 600,
+               std::array<double, 3> view = {{0.3, -0.4, -1.0}})
+{
+  auto coloured = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, double w0, double w1,
+                      double w2, double shade) {
+    const double d = w0 * get(values, source(h, tm)) + w1 * get(values, target(h, tm)) +
+                     w2 * get(values, target(next(h, tm), tm));
+    const double t = largest > 0 ? d / largest : 0;
+    const double phase = t * bands - std::floor(t * bands);
+    const double band = (bands > 0 && (phase < 0.06 || phase > 0.94)) ? 0.45 : 1.0;
+    const auto c = viridis(t);
+    std::array<unsigned char, 3> rgb;
+    for(int k = 0; k < 3; ++k)
+      rgb[k] = static_cast<unsigned char>(255 * std::min(1.0, c[k] * band * (0.55 + 0.45 * shade)));
+    return rgb;
+  };
+  internal_png::render(filename, tm, vpm, curves, size, view, coloured);
 }
 
 } // namespace IO

@@ -1,0 +1,179 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// The region-wise linear distance field (DESIGN.md §5): on every face of M,
+// the lower envelope of the linear fields of the copies that survive there
+// (`Ridge_curve::regions`). A query is the smallest of the face's cell fields
+// at the point, which is the envelope by definition; a face the ridge does not
+// cross has one cell, so its queries cost one dot product.
+#ifndef GEODESIC_RIDGE_DISTANCE_FIELD_H
+#define GEODESIC_RIDGE_DISTANCE_FIELD_H
+
+#include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/exceptions.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <array>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace Geodesic_ridge {
+
+/// \ingroup PkgGeodesicRidgeRef
+/// The region-wise linear geodesic distance field of one source on a triangle
+/// mesh: per face, the lower envelope of the linear fields of the copies that
+/// win there (the cells of `Ridge_curve::regions`).
+///
+/// Built once (O(number of cells)), it owns its data and does not refer to the
+/// mesh or the ridge afterwards, except through the index maps it was given.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam VertexIndexMap, FaceIndexMap readable property maps to indices in
+///         `[0, num_vertices)`, `[0, num_faces)`: the ones the ridge was
+///         computed with
+template <class TriangleMesh, class VertexIndexMap, class FaceIndexMap>
+class Geodesic_distance_field
+{
+public:
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+
+  /// \param regions per face index, the cells of the lower envelope
+  ///        (`Ridge_curve::regions`)
+  /// \param vertex_distances per vertex index, the distance at the vertex
+  ///        (`Ridge_curve::vertex_distances`)
+  Geodesic_distance_field(const std::vector<std::vector<Ridge_region_cell> >& regions,
+                          const std::vector<double>& vertex_distances, VertexIndexMap vim, FaceIndexMap fim)
+      : vertex_distances_(vertex_distances), vim_(vim), fim_(fim)
+  {
+    first_cell_.reserve(regions.size() + 1);
+    first_cell_.push_back(0);
+    for(const auto& cells : regions)
+    {
+      if(cells.empty()) throw Invalid_parameter_error("a face has no cell: the regions are not those of a ridge curve");
+      for(const Ridge_region_cell& c : cells) fields_.push_back(c.field);
+      first_cell_.push_back(fields_.size());
+    }
+  }
+
+  std::size_t number_of_faces() const { return first_cell_.size() - 1; }
+
+  /// The number of cells of the envelope on face `f` (1 where no ridge
+  /// crosses it, nor any boundary between fronts).
+  std::size_t number_of_cells(face_descriptor f) const
+  {
+    const std::size_t i = face_index(f);
+    return first_cell_[i + 1] - first_cell_[i];
+  }
+
+  /// The linear field (distances at the face's three corners, in the order of
+  /// a `Face_location`) of cell `c` of face `f`.
+  const std::array<double, 3>& cell_field(face_descriptor f, std::size_t c) const
+  {
+    return fields_[first_cell_[face_index(f)] + c];
+  }
+
+  /// The cell of face `loc.first` that holds the point `loc`: the one whose
+  /// field is lowest there. On a boundary between cells, where their fields
+  /// agree, the first of them in the order of `Ridge_curve::regions`.
+  template <class FT>
+  std::size_t locate(const std::pair<face_descriptor, std::array<FT, 3> >& loc) const
+  {
+    return lowest(face_index(loc.first), barycentric(loc.second)).first;
+  }
+
+  /// The distance at the surface point `loc` (a `Face_location`: a face and
+  /// barycentric coordinates in CGAL's corner order).
+  template <class FT>
+  double distance(const std::pair<face_descriptor, std::array<FT, 3> >& loc) const
+  {
+    return lowest(face_index(loc.first), barycentric(loc.second)).second;
+  }
+
+  /// The distance at vertex `v`: the solver's distance there (the smallest over
+  /// its copies in the extended surface).
+  double distance(vertex_descriptor v) const
+  {
+    const std::size_t i = static_cast<std::size_t>(get(vim_, v));
+    if(i >= vertex_distances_.size()) throw Invalid_parameter_error("vertex index out of range");
+    return vertex_distances_[i];
+  }
+
+  /// The distances at a range of `Face_location`s, written to `out` in order.
+  template <class LocationRange, class OutputIterator>
+  OutputIterator distances(const LocationRange& locations, OutputIterator out) const
+  {
+    for(const auto& loc : locations) *out++ = distance(loc);
+    return out;
+  }
+
+  /// The largest vertex distance.
+  double maximum_distance() const
+  {
+    double m = 0;
+    for(double d : vertex_distances_) m = (std::max)(m, d);
+    return m;
+  }
+
+private:
+  std::size_t face_index(face_descriptor f) const
+  {
+    const std::size_t i = static_cast<std::size_t>(get(fim_, f));
+    if(i + 1 >= first_cell_.size()) throw Invalid_parameter_error("face index out of range");
+    return i;
+  }
+  template <class FT>
+  static std::array<double, 3> barycentric(const std::array<FT, 3>& b)
+  {
+    return {{CGAL::to_double(b[0]), CGAL::to_double(b[1]), CGAL::to_double(b[2])}};
+  }
+  std::pair<std::size_t, double> lowest(std::size_t f, const std::array<double, 3>& b) const
+  {
+    std::pair<std::size_t, double> best(0, std::numeric_limits<double>::infinity());
+    for(std::size_t c = first_cell_[f]; c < first_cell_[f + 1]; ++c)
+    {
+      const std::array<double, 3>& d = fields_[c];
+      const double value = b[0] * d[0] + b[1] * d[1] + b[2] * d[2];
+      if(value < best.second) best = {c - first_cell_[f], value};
+    }
+    return best;
+  }
+
+  std::vector<std::size_t> first_cell_;        // per face index, into fields_
+  std::vector<std::array<double, 3> > fields_;  // per cell: corner distances
+  std::vector<double> vertex_distances_;
+  VertexIndexMap vim_;
+  FaceIndexMap fim_;
+};
+
+/// \ingroup PkgGeodesicRidgeRef
+/// The region-wise field of a computed ridge. `np` must give the same
+/// `vertex_index_map` and `face_index_map` as the call that computed it.
+template <class TriangleMesh, class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
+auto make_distance_field(const TriangleMesh& tm, const Ridge_curve<TriangleMesh, Point>& ridge,
+                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  if(ridge.regions.size() != num_faces(tm) || ridge.vertex_distances.size() != num_vertices(tm))
+    throw Invalid_parameter_error("the ridge curve was not computed on this mesh");
+  return Geodesic_distance_field<TriangleMesh, std::decay_t<decltype(vim)>, std::decay_t<decltype(fim)> >(
+      ridge.regions, ridge.vertex_distances, vim, fim);
+}
+
+/// \ingroup PkgGeodesicRidgeRef
+/// One call: computes the ridge of `source` (a vertex or a `Face_location`)
+/// with the named parameters of `compute_ridge_curve()`, and returns its field.
+template <class TriangleMesh, class Source, class NamedParameters = CGAL::parameters::Default_named_parameters>
+auto compute_distance_field(const TriangleMesh& tm, const Source& source,
+                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return make_distance_field(tm, compute_ridge_curve(tm, source, np), np);
+}
+
+} // namespace Geodesic_ridge
+
+#endif // GEODESIC_RIDGE_DISTANCE_FIELD_H
