@@ -18,11 +18,13 @@
 // Surface_mesh_shortest_path on M. Mean relative error (%) of
 //   (a) linear interpolation of the exact vertex distances,
 //   (b) the region-wise field with the exact solver,
+//   (c) the cone field (exact solver; beyond the paper),
 //   (d) the region-wise field with fast marching,
 // over the points (those at distance 0 skipped). The table gives, per mesh, the
-// median over sources of each, the median and the worst of (b)/(a), and the
-// in-process query throughput of the field (queries per second, a million
-// queries over the same points).
+// median over sources of each, the median and the worst of (b)/(a) and (c)/(a),
+// and the in-process query throughput of the linear and the cone field
+// (queries per second, a million queries over the same points), and the time
+// of the exact pipeline with and without the cones (median over sources).
 #include "benchmark_meshes.h"
 
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
@@ -122,9 +124,10 @@ int main(int argc, char** argv)
               "(std::mt19937 seed %u), tolerance %g. Mean relative error in %%, median over sources; "
               "(b)/(a): median and worst over sources.\n\n",
               per_mesh, per_mesh, points, seed, tolerance);
-  std::printf("| mesh | faces | (a) linear | (b) ridge-split, exact | (d) ridge-split, fmm | (b)/(a) median | "
-              "(b)/(a) worst | (d)/(a) median | paper (a) → (b) | queries/s |\n"
-              "|---|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
+  std::printf("| mesh | faces | (a) linear | (b) ridge-split, exact | (c) cone | (d) ridge-split, fmm | (b)/(a) median | "
+              "(b)/(a) worst | (c)/(a) median | (c)/(a) worst | (d)/(a) median | paper (a) → (b) | queries/s linear, cone | "
+              "exact pipeline s, with cones |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|\n");
   std::fflush(stdout);
   for(const std::string& file : files)
   {
@@ -132,8 +135,8 @@ int main(int argc, char** argv)
     Geodesic_ridge::IO::read_triangle_mesh(file, mesh);
     if(!chosen && mesh.number_of_faces() > max_faces) continue;
     const std::vector<Location> sample = area_uniform_points(mesh, points, seed);
-    std::vector<double> a_err, b_err, d_err, ratio_b, ratio_d;
-    double queries_per_second = 0;
+    std::vector<double> a_err, b_err, c_err, d_err, ratio_b, ratio_c, ratio_d, time_linear, time_cone;
+    double queries_per_second = 0, cone_queries_per_second = 0;
     for(std::size_t s = 0; s < per_mesh; ++s)
     {
       const Mesh::Vertex_index source(static_cast<Mesh::size_type>(s * mesh.number_of_vertices() / per_mesh));
@@ -149,50 +152,67 @@ int main(int argc, char** argv)
                          sample[i].first, {{sample[i].second[0], sample[i].second[1], sample[i].second[2]}})
                        .first;
       namespace p = Geodesic_ridge::parameters;
-      const auto field_exact = Geodesic_ridge::compute_distance_field(mesh, source, p::tolerance(tolerance));
+      auto t0 = std::chrono::steady_clock::now();
+      const auto ridge_linear = Geodesic_ridge::compute_ridge_curve(mesh, source, p::tolerance(tolerance));
+      time_linear.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      t0 = std::chrono::steady_clock::now();
+      const auto ridge_cone =
+          Geodesic_ridge::compute_ridge_curve(mesh, source, p::tolerance(tolerance, p::field(Geodesic_ridge::Field::cone)));
+      time_cone.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      const auto field_exact = Geodesic_ridge::make_distance_field(mesh, ridge_linear);
+      const auto field_cone = Geodesic_ridge::make_distance_field(mesh, ridge_cone, p::field(Geodesic_ridge::Field::cone));
       const auto field_fmm = Geodesic_ridge::compute_distance_field(
           mesh, source, p::tolerance(tolerance, p::solver(Geodesic_ridge::Fast_marching_solver())));
-      std::vector<double> b, d;
+      std::vector<double> b, c, d;
       field_exact.distances(sample, std::back_inserter(b));
+      field_cone.distances(sample, std::back_inserter(c));
       field_fmm.distances(sample, std::back_inserter(d));
-      double ea = 0, eb = 0, ed = 0;
+      double ea = 0, eb = 0, ec = 0, ed = 0;
       std::size_t n = 0;
       for(std::size_t i = 0; i < sample.size(); ++i)
       {
         if(!(exact[i] > 0)) continue;
         const auto h = mesh.halfedge(sample[i].first);
-        const std::array<std::size_t, 3> c = {{std::size_t(mesh.source(h)), std::size_t(mesh.target(h)),
-                                               std::size_t(mesh.target(mesh.next(h)))}};
-        const double linear = sample[i].second[0] * exact_vertex[c[0]] + sample[i].second[1] * exact_vertex[c[1]] +
-                              sample[i].second[2] * exact_vertex[c[2]];
+        const std::array<std::size_t, 3> corner = {{std::size_t(mesh.source(h)), std::size_t(mesh.target(h)),
+                                                    std::size_t(mesh.target(mesh.next(h)))}};
+        const double linear = sample[i].second[0] * exact_vertex[corner[0]] +
+                              sample[i].second[1] * exact_vertex[corner[1]] +
+                              sample[i].second[2] * exact_vertex[corner[2]];
         ea += std::abs(linear - exact[i]) / exact[i];
         eb += std::abs(b[i] - exact[i]) / exact[i];
+        ec += std::abs(c[i] - exact[i]) / exact[i];
         ed += std::abs(d[i] - exact[i]) / exact[i];
         ++n;
       }
       a_err.push_back(100 * ea / n);
       b_err.push_back(100 * eb / n);
+      c_err.push_back(100 * ec / n);
+      ratio_c.push_back(ec / ea);
       d_err.push_back(100 * ed / n);
       ratio_b.push_back(eb / ea);
       ratio_d.push_back(ed / ea);
       if(s == 0)
       {
         // throughput: a million queries over the sample, in process
-        std::vector<double> out(sample.size());
-        const std::size_t rounds = (1000000 + sample.size() - 1) / sample.size();
-        double checksum = 0;
-        const auto t0 = std::chrono::steady_clock::now();
-        for(std::size_t r = 0; r < rounds; ++r)
-        {
-          field_exact.distances(sample, out.begin());
-          checksum += out[r % out.size()];
-        }
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        queries_per_second = double(rounds * sample.size()) / seconds;
-        if(checksum < 0) std::printf("impossible\n");
+        auto throughput = [&](const auto& field) {
+          std::vector<double> out(sample.size());
+          const std::size_t rounds = (1000000 + sample.size() - 1) / sample.size();
+          double checksum = 0;
+          const auto t1 = std::chrono::steady_clock::now();
+          for(std::size_t r = 0; r < rounds; ++r)
+          {
+            field.distances(sample, out.begin());
+            checksum += out[r % out.size()];
+          }
+          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+          if(checksum < 0) std::printf("impossible\n");
+          return double(rounds * sample.size()) / seconds;
+        };
+        queries_per_second = throughput(field_exact);
+        cone_queries_per_second = throughput(field_cone);
       }
-      std::fprintf(stderr, "%s source %zu: (a) %.4f (b) %.4f (d) %.4f\n", fs::path(file).stem().c_str(),
-                   std::size_t(source), a_err.back(), b_err.back(), d_err.back());
+      std::fprintf(stderr, "%s source %zu: (a) %.4f (b) %.4f (c) %.4f (d) %.4f\n", fs::path(file).stem().c_str(),
+                   std::size_t(source), a_err.back(), b_err.back(), c_err.back(), d_err.back());
     }
     const std::string stem = fs::path(file).stem().string();
     std::string paper_text = "";
@@ -203,10 +223,11 @@ int main(int argc, char** argv)
         std::snprintf(buf, sizeof buf, "%.4f → %.4f", r.linear, r.split);
         paper_text = buf;
       }
-    std::printf("| %s | %zu | %.4f | %.4f | %.4f | %.3f | %.3f | %.3f | %s | %.3g |\n", stem.c_str(),
-                std::size_t(mesh.number_of_faces()), median(a_err), median(b_err), median(d_err), median(ratio_b),
-                *std::max_element(ratio_b.begin(), ratio_b.end()), median(ratio_d), paper_text.c_str(),
-                queries_per_second);
+    std::printf("| %s | %zu | %.4f | %.4f | %.5f | %.4f | %.3f | %.3f | %.4f | %.4f | %.3f | %s | %.3g, %.3g | %.3g, %.3g |\n",
+                stem.c_str(), std::size_t(mesh.number_of_faces()), median(a_err), median(b_err), median(c_err),
+                median(d_err), median(ratio_b), *std::max_element(ratio_b.begin(), ratio_b.end()), median(ratio_c),
+                *std::max_element(ratio_c.begin(), ratio_c.end()), median(ratio_d), paper_text.c_str(),
+                queries_per_second, cone_queries_per_second, median(time_linear), median(time_cone));
     std::fflush(stdout);
   }
   return 0;

@@ -7,7 +7,7 @@
 //                  [--ridge-locations OUT.txt] [--rough-cut OUT.polylines.txt]
 //                  [--refined OUT.ply [--ply-ascii]]
 //                  [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]
-//                  [--query IN.txt [--query-barycentric] --query-out OUT.txt]
+//                  [--query IN.txt [--query-barycentric] --query-out OUT.txt] [--field linear|cone]
 //                  [--stats OUT.json] [--png OUT.png]
 //
 // Exit status: 0 success, 1 bad input (mesh, source, parameter), 2 bad command
@@ -57,7 +57,7 @@ const char* usage_text =
     "                      [--refined OUT.ply [--ply-ascii]]\n"
     "                      [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]\n"
     "                      [--query IN.txt [--query-barycentric] --query-out OUT.txt]\n"
-    "                      [--stats OUT.json] [--png OUT.png]\n"
+    "                      [--field linear|cone] [--stats OUT.json] [--png OUT.png]\n"
     "  MESH              closed, connected, manifold triangle mesh (.off, .obj, .ply)\n"
     "  --source-vertex V source at vertex V (0-based, file order)\n"
     "  --source-point FACE X Y Z\n"
@@ -83,6 +83,10 @@ const char* usage_text =
     "                    within 1e-7 of its size), or with --query-barycentric 'FACE B0 B1 B2'\n"
     "                    (summing to 1 within 1e-9); '#' starts a comment\n"
     "  --query-out OUT   the distances, one per line in the order of IN, 17 digits\n"
+    "  --field KIND      the field the queries evaluate: linear (default, the paper's\n"
+    "                    region-wise linear field) or cone (exact solver only: per face\n"
+    "                    copy, the exact solver's cones; the refined mesh, the iso-lines\n"
+    "                    and the picture stay linear)\n"
     "  --rough-cut OUT   write the rough cut locus K (stage 1) as CGAL polylines\n"
     "  --stats OUT.json  write counts, timings and parameters as JSON\n"
     "  --png OUT.png     picture: the mesh from two opposite sides coloured by the distance\n"
@@ -127,6 +131,7 @@ struct Options
   bool isolines_from_vertices = false;
   std::string query, query_out;
   bool query_barycentric = false;
+  Geodesic_ridge::Field field = Geodesic_ridge::Field::linear;
 };
 
 std::vector<double> parse_values(const std::string& s)
@@ -192,6 +197,13 @@ Options parse(int argc, char** argv)
     else if(a == "--query") o.query = value(i, a);
     else if(a == "--query-out") o.query_out = value(i, a);
     else if(a == "--query-barycentric") o.query_barycentric = true;
+    else if(a == "--field")
+    {
+      const std::string& kind = value(i, a);
+      if(kind == "linear") o.field = Geodesic_ridge::Field::linear;
+      else if(kind == "cone") o.field = Geodesic_ridge::Field::cone;
+      else throw Geodesic_ridge::Invalid_parameter_error("unknown field '" + kind + "': linear or cone");
+    }
     else if(a == "--png") o.png = value(i, a);
     else if(a == "--solver")
     {
@@ -213,6 +225,8 @@ Options parse(int argc, char** argv)
   if(o.query_barycentric && o.query.empty()) throw Usage_error("--query-barycentric needs --query");
   if(o.isolines_from_vertices && o.isolines.empty()) throw Usage_error("--isolines-from-vertices needs --isolines or --isoline-values");
   if(o.ply_ascii && o.refined.empty()) throw Usage_error("--ply-ascii needs --refined");
+  if(o.field == Geodesic_ridge::Field::cone && o.solver != "exact")
+    throw Geodesic_ridge::Invalid_parameter_error("the cone field needs the exact solver");
   if(have_tolerance) o.tolerance = parse_number("tolerance", tolerance_text);
   // a bad tolerance is reported before the mesh is read
   Geodesic_ridge::internal::get_tolerance(Geodesic_ridge::parameters::tolerance(o.tolerance));
@@ -464,7 +478,7 @@ int run(const Options& o)
     if(o.solver == "fmm")
       return Geodesic_ridge::compute_ridge_curve(
           mesh, source, p::tolerance(o.tolerance, p::solver(Geodesic_ridge::Fast_marching_solver())));
-    return Geodesic_ridge::compute_ridge_curve(mesh, source, p::tolerance(o.tolerance));
+    return Geodesic_ridge::compute_ridge_curve(mesh, source, p::tolerance(o.tolerance, p::field(o.field)));
   };
   std::optional<Ridge> ridge;
   if(o.source_vertex)
@@ -504,6 +518,7 @@ int run(const Options& o)
             << g.ridge.total_length << "; " << g.time_total << " s\n";
   // the region-wise field, and the refined mesh where something needs it
   const auto field = Geodesic_ridge::make_distance_field(mesh, *ridge);
+  const auto query_field = Geodesic_ridge::make_distance_field(mesh, *ridge, Geodesic_ridge::parameters::field(o.field));
   Mesh refined;
   std::optional<Geodesic_ridge::Refined_mesh_statistics> refined_stats;
   auto refined_distance = refined.add_property_map<vertex_descriptor, double>("v:distance", 0).first;
@@ -570,7 +585,7 @@ int run(const Options& o)
   {
     std::vector<double> distances;
     distances.reserve(queries.size());
-    field.distances(queries, std::back_inserter(distances));
+    query_field.distances(queries, std::back_inserter(distances));
     std::ofstream os(o.query_out);
     if(!os) throw Geodesic_ridge::Error("cannot open '" + o.query_out + "' for writing");
     os.precision(17);

@@ -74,6 +74,11 @@ foreach(solver exact fmm)
            COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off -DDATA=${B} -DOUT=${OUTDIR}/${solver}
                    "-DEXTRA=--solver;${solver}" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_field_outputs.cmake)
 endforeach()
+add_test(NAME cli.field.cone
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off -DDATA=${B} -DOUT=${OUTDIR}/cone
+                 "-DEXTRA=--field;cone" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_field_outputs.cmake)
+cli_failure(cone_with_fmm         "the cone field needs the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --field cone)
+cli_failure(unknown_field         "unknown field 'planar'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field planar)
 set(Q ${D}/torus_1k.off --source-vertex 0 --query-out ${OUTDIR}/q.txt --query)
 cli_failure(query_bad_face        "line 1: face 5000 is out of range" ${CLI} ${Q} ${B}/queries_bad_face.txt)
 cli_failure(query_malformed       "line 2: expected 'FACE X Y Z', got 3 fields" ${CLI} ${Q} ${B}/queries_malformed.txt)

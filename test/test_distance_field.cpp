@@ -485,3 +485,71 @@ TEST_CASE("distance field: bad input is refused", "[distance_field]")
   CHECK_THROWS_AS(Geodesic_ridge::isolines(m, CGAL::make_property_map(d), {std::nan("")}, std::back_inserter(lines)),
                   Geodesic_ridge::Invalid_parameter_error);
 }
+
+TEST_CASE("cone field: exact on the doubly covered square, far better than linear on real meshes", "[distance_field]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  const auto cone = p::field(Geodesic_ridge::Field::cone);
+  // flat sheets: every window's apex is the source or one of its mirror
+  // images, so the cones are exact everywhere, the source's one-ring included
+  for(const double perturbation : {0.0, 0.25})
+  {
+    const unsigned seed = test_seed(20261204);
+    const Doubly_covered_square sq = make_doubly_covered_square(16, perturbation, seed);
+    const vertex_descriptor s = sq.top[4 + 17 * 5];
+    const double a = sq.mesh.point(s).x(), b = sq.mesh.point(s).y();
+    const Ridge rc = Geodesic_ridge::compute_ridge_curve(sq.mesh, s, cone);
+    const auto field = Geodesic_ridge::make_distance_field(sq.mesh, rc, cone);
+    CHECK(field.field() == Geodesic_ridge::Field::cone);
+    const Doubly_covered_square_oracle oracle(a, b);
+    double worst = 0;
+    for(const Location& l : random_face_locations(sq.mesh, 20000, seed))
+    {
+      const Point_3 q = point_at(sq.mesh, l);
+      double exact = std::hypot(q.x() - a, q.y() - b);
+      if(sq.bottom_face[std::size_t(l.first)])
+      {
+        exact = std::numeric_limits<double>::infinity();
+        for(const auto& im : oracle.images) exact = std::min(exact, std::hypot(q.x() - im[0], q.y() - im[1]));
+      }
+      worst = std::max(worst, std::abs(field.distance(l) - exact));
+    }
+    INFO("doubly covered square n=16 perturbation " << perturbation << " seed " << seed << ": largest error " << worst);
+    std::cout << "[distance_field] cone field on the square, perturbation " << perturbation << ": largest error "
+              << worst << "\n";
+    CHECK(worst <= 1e-12);
+  }
+  // real meshes: against SMSP on M at random points
+  for(const std::string name : {"bunny_1k.off", "teddy_3k.off"})
+  {
+    const Mesh m = read_data_mesh(name);
+    const vertex_descriptor s(100);
+    const Ridge rc = Geodesic_ridge::compute_ridge_curve(m, s, cone);
+    const auto linear = Geodesic_ridge::make_distance_field(m, rc);
+    const auto cones = Geodesic_ridge::make_distance_field(m, rc, cone);
+    typedef CGAL::Surface_mesh_shortest_path_traits<K, Mesh> Traits;
+    CGAL::Surface_mesh_shortest_path<Traits> sp(m);
+    sp.add_source_point(s);
+    sp.build_sequence_tree();
+    double linear_error = 0, cone_error = 0;
+    const unsigned seed = test_seed(20261205);
+    for(const Location& l : random_face_locations(m, 5000, seed))
+    {
+      const double exact = sp.shortest_distance_to_source_points(l.first, {{l.second[0], l.second[1], l.second[2]}}).first;
+      linear_error += std::abs(linear.distance(l) - exact);
+      cone_error += std::abs(cones.distance(l) - exact);
+    }
+    INFO(name << " source 100 seed " << seed << ": mean error linear " << linear_error / 5000 << ", cone "
+              << cone_error / 5000);
+    std::cout << "[distance_field] " << name << ": mean error linear " << linear_error / 5000 << ", cone "
+              << cone_error / 5000 << "\n";
+    CHECK(cone_error <= 0.1 * linear_error);
+  }
+  // the cone field needs cones, and the exact solver
+  const Mesh m = read_data_mesh("bunny_1k.off");
+  const Ridge plain = Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0));
+  CHECK_THROWS_AS(Geodesic_ridge::make_distance_field(m, plain, cone), Geodesic_ridge::Invalid_parameter_error);
+  CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(
+                      m, vertex_descriptor(0), p::field(Geodesic_ridge::Field::cone, p::solver(Geodesic_ridge::Fast_marching_solver()))),
+                  Geodesic_ridge::Invalid_parameter_error);
+}

@@ -36,7 +36,14 @@ struct maximum_solves_t {};
 struct guided_extension_t {};
 struct tree_from_solver_t {};
 struct predicted_extension_t {};
+struct field_t {};
 } // namespace internal_np
+
+/// \ingroup PkgGeodesicRidgeRef
+/// The distance field inside a face copy: the linear interpolation of its
+/// corner distances (the paper's), or the cone of the exact solver's window at
+/// its centroid (`Face_cone`; exact solver only).
+enum class Field { linear, cone };
 
 /// Default of `parameters::maximum_rings`.
 constexpr int default_maximum_rings = 256;
@@ -109,6 +116,12 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, minimum_spur_angle)
 /// the cut graph lacks a branch, both fronts reach its faces inside one sheet.
 /// 0 keeps the sheet-only definition (ridges between sheets only).
 GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle)
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// `Field::linear` (default) or `Field::cone`: with `cone`, the ridge curve
+/// also keeps, per face, the cone of every copy (`Ridge_curve::cones`; the
+/// exact solver reads them from its shortest paths), and the distance field
+/// evaluates them instead of the linear fields.
+GEODESIC_RIDGE_NAMED_PARAMETER(Field, field)
 } // namespace parameters
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -145,6 +158,9 @@ struct Ridge_curve
   /// copies in the extended surface, i.e. the geodesic distance on M when E holds
   /// every shortest path
   std::vector<double> vertex_distances;
+  /// with `parameters::field(Field::cone)`, per face of M (by face index): the
+  /// cones of its copies that no other copy dominates; empty otherwise
+  std::vector<std::vector<Face_cone> > cones;
   Rough_cut_locus<TriangleMesh> rough_cut_locus;
   Geodesic_ridge_statistics statistics;
 };
@@ -271,10 +287,50 @@ std::vector<double> smallest_over_copies(const Extended_surface<Point>& E, const
   return best;
 }
 
-// the distances from the source over E, by vertex index of E
-template <class Point, class Solver>
-void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vector<double>& distance)
+// per face of E (a copy): the distances at its three corners
+template <class Point>
+std::vector<std::array<double, 3> > corner_distances(const Extended_surface<Point>& E,
+                                                     const std::vector<double>& distance)
 {
+  std::vector<std::array<double, 3> > out;
+  out.reserve(E.mesh.number_of_faces());
+  for(auto c : E.mesh.faces())
+  {
+    auto h = E.mesh.halfedge(c);
+    out.push_back({{distance[E.mesh.source(h)], distance[E.mesh.target(h)], distance[E.mesh.target(E.mesh.next(h))]}});
+  }
+  return out;
+}
+
+// the distances from the source over E, by vertex index of E; and the cones
+// of the copies that no other copy dominates, if asked for (the solver must
+// offer them)
+template <class Point, class Solver>
+void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vector<double>& distance,
+              std::vector<Face_cone>* cones = nullptr, std::size_t number_of_faces = 0)
+{
+  if(cones)
+  {
+    if constexpr(std::is_same<std::decay_t<Solver>, Exact_solver>::value)
+    {
+      // called by the solver once `distance` is written
+      std::vector<char> undominated;
+      auto wanted = [&](std::size_t copy) {
+        if(undominated.empty())
+        {
+          undominated.assign(E.mesh.number_of_faces(), 0);
+          for(const Face_copies& fc : undominated_copies(E, corner_distances(E, distance), number_of_faces))
+            for(std::size_t c : fc.copies) undominated[c] = 1;
+        }
+        return undominated[copy] != 0;
+      };
+      if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance), *cones, wanted);
+      else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), *cones, wanted);
+      return;
+    }
+    else
+      throw Invalid_parameter_error(std::string("the cone field needs the exact solver, not '") + solver.name() + "'");
+  }
   if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance));
   else solver(E.mesh, E.source_location, CGAL::make_property_map(distance));
 }
@@ -298,21 +354,6 @@ void fast_marching_from_anchors(const Extended_surface<Point>& E, const std::vec
   fast_marching_distances(E.mesh, E.mesh.points(), get(CGAL::vertex_index, E.mesh), seeds, distance);
 }
 
-// per face of E (a copy): the distances at its three corners
-template <class Point>
-std::vector<std::array<double, 3> > corner_distances(const Extended_surface<Point>& E,
-                                                     const std::vector<double>& distance)
-{
-  std::vector<std::array<double, 3> > out;
-  out.reserve(E.mesh.number_of_faces());
-  for(auto c : E.mesh.faces())
-  {
-    auto h = E.mesh.halfedge(c);
-    out.push_back({{distance[E.mesh.source(h)], distance[E.mesh.target(h)], distance[E.mesh.target(E.mesh.next(h))]}});
-  }
-  return out;
-}
-
 // What drives the growth of E (the named parameters of the same names).
 struct Growth_schedule
 {
@@ -327,7 +368,8 @@ template <class TriangleMesh, class FaceIndexMap, class VertexIndexMap, class Bu
 void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_source<TriangleMesh>& src,
                     VertexIndexMap vim, Builder& builder, const Solver& solver, const Growth_schedule& schedule,
                     double mean_edge, Extended_surface<Point>& E, std::vector<Face_copies>& face_copies,
-                    std::vector<double>& vertex_distances, Geodesic_ridge_statistics& st)
+                    std::vector<double>& vertex_distances, Geodesic_ridge_statistics& st,
+                    std::vector<Face_cone>* cones = nullptr)
 {
   const Faces_across across = faces_across(tm, fim);
   // The growth rule (doc/manual.md, "The growth rule"): E grows a band of
@@ -363,7 +405,7 @@ void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_sou
 
     t0 = std::chrono::steady_clock::now();
     std::vector<double> distance(E.mesh.number_of_vertices());
-    if(pass == Pass::solve) { solve_on(E, solver, distance); ++st.solves; }
+    if(pass == Pass::solve) { solve_on(E, solver, distance, cones, num_faces(tm)); ++st.solves; }
     else if(pass == Pass::predicted) { solve_on(E, Fast_marching_solver(), distance); ++st.predicted_passes; }
     else { fast_marching_from_anchors(E, anchor, distance); ++st.predicted_passes; }
     st.time_solve += seconds_since(t0);
@@ -438,6 +480,9 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   const int maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), default_maximum_rings);
   const int maximum_solves = choose_parameter(get_parameter(np, internal_np::maximum_solves_t()), default_maximum_solves);
   const bool guided = choose_parameter(get_parameter(np, internal_np::guided_extension_t()), false);
+  const Field field_kind = choose_parameter(get_parameter(np, internal_np::field_t()), Field::linear);
+  if(field_kind == Field::cone && !std::is_same<std::decay_t<decltype(solver)>, Exact_solver>::value)
+    throw Invalid_parameter_error(std::string("the cone field needs the exact solver, not '") + solver.name() + "'");
   const bool tree_from_solver =
       guided || choose_parameter(get_parameter(np, internal_np::tree_from_solver_t()), false);
   if(initial_rings < 0 || maximum_rings < initial_rings || extension_step < 1)
@@ -493,8 +538,18 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   Extended_surface<Point> E;
   std::vector<Face_copies> face_copies;
   const Growth_schedule schedule{extension_step, maximum_rings, maximum_solves, predicted, guided};
-  grow_and_solve(tm, fim, src, vim, builder, solver, schedule, mean_edge, E, face_copies, result.vertex_distances, st);
+  std::vector<Face_cone> copy_cones;
+  grow_and_solve(tm, fim, src, vim, builder, solver, schedule, mean_edge, E, face_copies, result.vertex_distances, st,
+                 field_kind == Field::cone ? &copy_cones : nullptr);
   st.extended_surface = E.statistics;
+  if(field_kind == Field::cone)
+  {
+    result.cones.assign(num_faces(tm), {});
+    for(std::size_t f = 0; f < face_copies.size(); ++f)
+      for(std::size_t c : face_copies[f].copies)
+        for(std::size_t i = 0; i < Exact_solver::cone_samples().size(); ++i)
+          result.cones[f].push_back(copy_cones[Exact_solver::cone_samples().size() * c + i]);
+  }
 
   // Stage 2c + 3: exact envelopes and the ridge curve
   t0 = std::chrono::steady_clock::now();

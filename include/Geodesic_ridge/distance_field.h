@@ -1,10 +1,13 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 //
-// The region-wise linear distance field (DESIGN.md §5): on every face of M,
-// the lower envelope of the linear fields of the copies that survive there
-// (`Ridge_curve::regions`). A query is the smallest of the face's cell fields
-// at the point, which is the envelope by definition; a face the ridge does not
-// cross has one cell, so its queries cost one dot product.
+// The region-wise distance field (DESIGN.md §5): on every face of M, the
+// lower envelope of the fields of the copies that survive there. Linear (the
+// paper's): the cells of `Ridge_curve::regions`, a query is the smallest of the
+// face's cell fields at the point, which is the envelope by definition; a face
+// the ridge does not cross has one cell, so its queries cost one dot product.
+// Cone (beyond the paper, exact solver): the smallest of the cones of the
+// face's copies (`Ridge_curve::cones`), the distance in the face's plane to
+// each copy's apex plus its offset.
 #ifndef GEODESIC_RIDGE_DISTANCE_FIELD_H
 #define GEODESIC_RIDGE_DISTANCE_FIELD_H
 
@@ -49,6 +52,44 @@ public:
                           const std::vector<double>& vertex_distances, VertexIndexMap vim, FaceIndexMap fim)
       : vertex_distances_(vertex_distances), vim_(vim), fim_(fim)
   {
+    set_cells(regions);
+  }
+
+  /// The cone field: per face index, the cones of its copies (`Ridge_curve::cones`)
+  /// and the face's corner points (in the order of a `Face_location`).
+  template <class Point_3>
+  Geodesic_distance_field(const std::vector<std::vector<Ridge_region_cell> >& regions,
+                          const std::vector<std::vector<Face_cone> >& cones,
+                          const std::vector<std::array<Point_3, 3> >& corners,
+                          const std::vector<double>& vertex_distances, VertexIndexMap vim, FaceIndexMap fim)
+      : vertex_distances_(vertex_distances), vim_(vim), fim_(fim)
+  {
+    set_cells(regions);
+    if(cones.size() != regions.size() || corners.size() != regions.size())
+      throw Invalid_parameter_error("the cones are not those of the ridge curve");
+    first_cone_.push_back(0);
+    for(std::size_t f = 0; f < cones.size(); ++f)
+    {
+      if(cones[f].empty()) throw Invalid_parameter_error("a face has no cone");
+      cones_.insert(cones_.end(), cones[f].begin(), cones[f].end());
+      first_cone_.push_back(cones_.size());
+      std::array<double, 9> c;
+      for(int k = 0; k < 3; ++k)
+      {
+        c[3 * k] = CGAL::to_double(corners[f][k].x());
+        c[3 * k + 1] = CGAL::to_double(corners[f][k].y());
+        c[3 * k + 2] = CGAL::to_double(corners[f][k].z());
+      }
+      corners_.push_back(c);
+    }
+  }
+
+  /// `Field::cone` or `Field::linear`.
+  Field field() const { return cones_.empty() ? Field::linear : Field::cone; }
+
+private:
+  void set_cells(const std::vector<std::vector<Ridge_region_cell> >& regions)
+  {
     first_cell_.reserve(regions.size() + 1);
     first_cell_.push_back(0);
     for(const auto& cells : regions)
@@ -58,6 +99,8 @@ public:
       first_cell_.push_back(fields_.size());
     }
   }
+
+public:
 
   std::size_t number_of_faces() const { return first_cell_.size() - 1; }
 
@@ -77,12 +120,14 @@ public:
   }
 
   /// The cell of face `loc.first` that holds the point `loc`: the one whose
-  /// field is lowest there. On a boundary between cells, where their fields
-  /// agree, the first of them in the order of `Ridge_curve::regions`.
+  /// field is lowest there (an index into `Ridge_curve::regions[f]`, or into
+  /// `Ridge_curve::cones[f]` for the cone field). On a boundary between cells,
+  /// where their fields agree, the first of them.
   template <class FT>
   std::size_t locate(const std::pair<face_descriptor, std::array<FT, 3> >& loc) const
   {
-    return lowest(face_index(loc.first), barycentric(loc.second)).first;
+    const std::size_t f = face_index(loc.first);
+    return (cones_.empty() ? lowest(f, barycentric(loc.second)) : lowest_cone(f, barycentric(loc.second))).first;
   }
 
   /// The distance at the surface point `loc` (a `Face_location`: a face and
@@ -90,7 +135,8 @@ public:
   template <class FT>
   double distance(const std::pair<face_descriptor, std::array<FT, 3> >& loc) const
   {
-    return lowest(face_index(loc.first), barycentric(loc.second)).second;
+    const std::size_t f = face_index(loc.first);
+    return (cones_.empty() ? lowest(f, barycentric(loc.second)) : lowest_cone(f, barycentric(loc.second))).second;
   }
 
   /// The distance at vertex `v`: the solver's distance there (the smallest over
@@ -141,9 +187,41 @@ private:
     }
     return best;
   }
+  // per copy, the cone of the sample point nearest to b (the cones of a copy
+  // come in groups, one per `Exact_solver::cone_samples()` point)
+  std::pair<std::size_t, double> lowest_cone(std::size_t f, const std::array<double, 3>& b) const
+  {
+    const std::array<double, 9>& p = corners_[f];
+    const auto& samples = Exact_solver::cone_samples();
+    const std::size_t S = samples.size();
+    std::size_t nearest = 0;
+    double nearest_d2 = std::numeric_limits<double>::infinity();
+    for(std::size_t i = 0; i < S; ++i)
+    {
+      const double d0 = b[0] - samples[i][0], d1 = b[1] - samples[i][1], d2 = b[2] - samples[i][2];
+      const double x = d0 * p[0] + d1 * p[3] + d2 * p[6], y = d0 * p[1] + d1 * p[4] + d2 * p[7],
+                   z = d0 * p[2] + d1 * p[5] + d2 * p[8];
+      const double dd = x * x + y * y + z * z;
+      if(dd < nearest_d2) { nearest_d2 = dd; nearest = i; }
+    }
+    std::pair<std::size_t, double> best(0, std::numeric_limits<double>::infinity());
+    for(std::size_t c = first_cone_[f] + nearest; c < first_cone_[f + 1]; c += S)
+    {
+      const Face_cone& cone = cones_[c];
+      const double w0 = b[0] - cone.apex[0], w1 = b[1] - cone.apex[1], w2 = b[2] - cone.apex[2];
+      const double x = w0 * p[0] + w1 * p[3] + w2 * p[6], y = w0 * p[1] + w1 * p[4] + w2 * p[7],
+                   z = w0 * p[2] + w1 * p[5] + w2 * p[8];
+      const double value = std::sqrt(x * x + y * y + z * z) + cone.offset;
+      if(value < best.second) best = {(c - first_cone_[f]) / S, value};
+    }
+    return best;
+  }
 
   std::vector<std::size_t> first_cell_;        // per face index, into fields_
   std::vector<std::array<double, 3> > fields_;  // per cell: corner distances
+  std::vector<std::size_t> first_cone_;        // per face index, into cones_ (cone field only)
+  std::vector<Face_cone> cones_;
+  std::vector<std::array<double, 9> > corners_; // per face index: its corner points (cone field only)
   std::vector<double> vertex_distances_;
   VertexIndexMap vim_;
   FaceIndexMap fim_;
@@ -151,17 +229,32 @@ private:
 
 /// \ingroup PkgGeodesicRidgeRef
 /// The region-wise field of a computed ridge. `np` must give the same
-/// `vertex_index_map` and `face_index_map` as the call that computed it.
+/// `vertex_point_map`, `vertex_index_map` and `face_index_map` as the call that
+/// computed it; `parameters::field(Field::cone)` asks for the cone field (the
+/// ridge must have been computed with it too).
 template <class TriangleMesh, class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto make_distance_field(const TriangleMesh& tm, const Ridge_curve<TriangleMesh, Point>& ridge,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  typedef Geodesic_distance_field<TriangleMesh, std::decay_t<decltype(vim)>, std::decay_t<decltype(fim)> > Field_type;
   if(ridge.regions.size() != num_faces(tm) || ridge.vertex_distances.size() != num_vertices(tm))
     throw Invalid_parameter_error("the ridge curve was not computed on this mesh");
-  return Geodesic_distance_field<TriangleMesh, std::decay_t<decltype(vim)>, std::decay_t<decltype(fim)> >(
-      ridge.regions, ridge.vertex_distances, vim, fim);
+  const Field kind = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, internal_np::field_t()), Field::linear);
+  if(kind == Field::linear) return Field_type(ridge.regions, ridge.vertex_distances, vim, fim);
+  if(ridge.cones.size() != num_faces(tm))
+    throw Invalid_parameter_error("the ridge curve has no cones: compute it with parameters::field(Field::cone)");
+  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                      get_const_property_map(CGAL::vertex_point, tm));
+  std::vector<std::array<Point, 3> > corners(num_faces(tm));
+  for(auto f : faces(tm))
+  {
+    const auto h = halfedge(f, tm);
+    corners[get(fim, f)] = {{get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm))}};
+  }
+  return Field_type(ridge.regions, ridge.cones, corners, ridge.vertex_distances, vim, fim);
 }
 
 /// \ingroup PkgGeodesicRidgeRef

@@ -10,9 +10,23 @@
 #include <CGAL/Surface_mesh_shortest_path.h>
 
 #include <array>
+#include <cmath>
 #include <utility>
+#include <vector>
 
 namespace Geodesic_ridge {
+
+/// \ingroup PkgGeodesicRidgeSolvers
+/// The exact distance near a point of a face, as a cone: the distance in the
+/// face's plane to `apex` (the source, or the saddle vertex where the shortest
+/// path first bends, unfolded into the face) plus `offset` (the distance at
+/// that apex). Exact wherever the shortest paths run through the same apex
+/// (one window of the exact solver).
+struct Face_cone
+{
+  std::array<double, 3> apex = {{0, 0, 0}}; ///< barycentric in the face (CGAL's corner order; may lie outside it)
+  double offset = 0;
+};
 
 /// \ingroup PkgGeodesicRidgeSolvers
 /// Model of `GeodesicSolver`: exact polyhedral distances by
@@ -29,7 +43,7 @@ struct Exact_solver
                   VertexDistanceMap distance) const
   {
     SMSP<TriangleMesh> sp(tm);
-    sp.add_source_point(s);
+    add_source(tm, sp, s);
     solve(tm, sp, distance);
   }
 
@@ -41,6 +55,62 @@ struct Exact_solver
                   VertexDistanceMap distance) const
   {
     SMSP<TriangleMesh> sp(tm);
+    add_source(tm, sp, loc);
+    solve(tm, sp, distance);
+  }
+
+  /// Same, and the cones of the faces: `cones[S * i + j]` is the cone of the
+  /// face of index i (`face_index`) at its sample point j
+  /// (`cone_samples()`, S of them), read from the shortest path from that
+  /// point (its first straight piece and the distance at its first bend), for
+  /// every face for which `wanted(i)` is true; `wanted` is called after the
+  /// distances are written. The optional query of the `GeodesicSolver` concept
+  /// that the cone field needs.
+  template <class TriangleMesh, class Source, class VertexDistanceMap, class Wanted>
+  void operator()(const TriangleMesh& tm, const Source& s, VertexDistanceMap distance, std::vector<Face_cone>& cones,
+                  const Wanted& wanted) const
+  {
+    SMSP<TriangleMesh> sp(tm);
+    add_source(tm, sp, s);
+    solve(tm, sp, distance);
+    face_cones(tm, sp, cones, wanted);
+  }
+
+  /// The points of a face (barycentric) whose shortest paths give its cones.
+  /// The cone field evaluates, per copy, the cone of the sample nearest to the
+  /// query: measured (bench_distance_field), one sample (the centroid) leaves
+  /// a mean error 7 times that of seven, the minimum over the samples' cones
+  /// is worse still (a cone evaluated beyond its window, in the shadow of a
+  /// saddle vertex, is too short).
+  static const std::vector<std::array<double, 3> >& cone_samples()
+  {
+    static const std::vector<std::array<double, 3> > samples = {
+        {{1. / 3, 1. / 3, 1. / 3}}, {{0.8, 0.1, 0.1}}, {{0.1, 0.8, 0.1}}, {{0.1, 0.1, 0.8}},
+        {{0.45, 0.45, 0.1}}, {{0.1, 0.45, 0.45}}, {{0.45, 0.1, 0.45}}};
+    return samples;
+  }
+
+private:
+  template <class TriangleMesh>
+  using Traits = CGAL::Surface_mesh_shortest_path_traits<
+      typename CGAL::Kernel_traits<typename boost::property_traits<typename boost::property_map<
+          TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type>::Kernel,
+      TriangleMesh>;
+  template <class TriangleMesh>
+  using SMSP = CGAL::Surface_mesh_shortest_path<Traits<TriangleMesh> >;
+
+  template <class TriangleMesh, class Solver>
+  static void add_source(const TriangleMesh&, Solver& sp,
+                         typename boost::graph_traits<TriangleMesh>::vertex_descriptor s)
+  {
+    sp.add_source_point(s);
+  }
+
+  template <class TriangleMesh, class Solver, class FT>
+  static void add_source(const TriangleMesh&, Solver& sp,
+                         const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
+                                         std::array<FT, 3> >& loc)
+  {
     std::array<FT, 3> w = loc.second;
 #if CGAL_VERSION_NR < CGAL_VERSION_NUMBER(5, 6, 0)
     // CGAL before 5.6 starts no cone towards the ends of the edge that holds a
@@ -56,19 +126,130 @@ struct Exact_solver
       for(FT& x : w) x = (x == FT(0)) ? nudge : x * (FT(1) - nudge);
     }
 #endif
-    typename SMSP<TriangleMesh>::Barycentric_coordinates b = {{w[0], w[1], w[2]}};
+    typename Solver::Barycentric_coordinates b = {{w[0], w[1], w[2]}};
     sp.add_source_point(loc.first, b);
-    solve(tm, sp, distance);
   }
 
-private:
-  template <class TriangleMesh>
-  using Traits = CGAL::Surface_mesh_shortest_path_traits<
-      typename CGAL::Kernel_traits<typename boost::property_traits<typename boost::property_map<
-          TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type>::Kernel,
-      TriangleMesh>;
-  template <class TriangleMesh>
-  using SMSP = CGAL::Surface_mesh_shortest_path<Traits<TriangleMesh> >;
+  // The cones of the wanted faces, from the shortest paths from their sample
+  // points: a path runs straight (in the unfolding) from the sample to its
+  // first bend (a saddle or border vertex, or the source vertex) or to the
+  // source point, the apex; the apex lies along the path's first piece at the
+  // length of the path up to it, and the apex's distance is the offset. A path
+  // goes straight through a flat vertex (angle sum 2π within 1e-9: on a
+  // lattice, paths meet vertices exactly), so that is no bend.
+  template <class TriangleMesh, class Solver, class Wanted>
+  static void face_cones(const TriangleMesh& tm, Solver& sp, std::vector<Face_cone>& cones, const Wanted& wanted)
+  {
+    typedef typename boost::graph_traits<TriangleMesh> GT;
+    typedef typename Solver::Point_3 Point_3;
+    const auto vpm = get(CGAL::vertex_point, tm);
+    const auto fim = get(CGAL::face_index, tm);
+    // thrown at the first bend: the visitor of Surface_mesh_shortest_path
+    // cannot stop a walk, and the rest of the path (to the source) is not needed
+    struct Apex_found {};
+    std::vector<char> bends(num_vertices(tm), 1);
+    {
+      std::vector<double> angle_sum(num_vertices(tm), 0);
+      const auto vim = get(CGAL::vertex_index, tm);
+      for(auto h : halfedges(tm))
+      {
+        if(is_border(h, tm)) continue;
+        const Point_3& a = get(vpm, source(h, tm));
+        const Point_3& b = get(vpm, target(h, tm));
+        const Point_3& c = get(vpm, target(next(h, tm), tm));
+        const auto u = a - b, w = c - b;
+        angle_sum[get(vim, target(h, tm))] += std::atan2(std::sqrt(CGAL::to_double(CGAL::cross_product(u, w).squared_length())),
+                                             CGAL::to_double(u * w));
+      }
+      for(auto v : vertices(tm))
+        bends[get(vim, v)] = is_border(v, tm) || std::abs(angle_sum[get(vim, v)] - 2 * CGAL_PI) > 1e-9 * 2 * CGAL_PI;
+    }
+    struct First_bend
+    {
+      Solver& sp;
+      const std::vector<char>& bends;
+      typename boost::property_map<TriangleMesh, CGAL::vertex_index_t>::const_type vim;
+      Point_3 last;              // the previous point of the path
+      bool have_direction;
+      Point_3 towards;           // a point of the first straight piece
+      double length;             // of the path so far
+      double apex_distance;      // the distance at the first bend
+      void step(const Point_3& p)
+      {
+        length += std::sqrt(CGAL::to_double(CGAL::squared_distance(last, p)));
+        last = p;
+        if(!have_direction) { towards = p; have_direction = true; }
+      }
+      void operator()(typename GT::halfedge_descriptor h, typename Solver::FT t) { step(sp.point(h, t)); }
+      void operator()(typename GT::vertex_descriptor v)
+      {
+        step(sp.point(v));
+        const double d = CGAL::to_double(sp.shortest_distance_to_source_points(v).first);
+        if(!bends[get(vim, v)] && d > 0) return; // straight through a flat vertex
+        apex_distance = d;
+        throw Apex_found();
+      }
+      void operator()(typename GT::face_descriptor f, typename Solver::Barycentric_coordinates b)
+      {
+        const Point_3 p = sp.point(f, b);
+        if(p == last && length == 0 && !have_direction) return; // the query point itself
+        step(p);
+        apex_distance = 0; // the source point
+        throw Apex_found();
+      }
+    };
+    const std::size_t S = cone_samples().size();
+    cones.assign(S * num_faces(tm), Face_cone());
+    for(auto f : faces(tm))
+    {
+      if(!wanted(static_cast<std::size_t>(get(fim, f)))) continue;
+      const auto h = halfedge(f, tm);
+      const Point_3 p[3] = {get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm))};
+      for(std::size_t i = 0; i < S; ++i)
+      {
+        const std::array<double, 3>& sb = cone_samples()[i];
+        const typename Solver::Barycentric_coordinates at = {{sb[0], sb[1], sb[2]}};
+        const Point_3 q = sp.point(f, at);
+        First_bend bend{sp, bends, get(CGAL::vertex_index, tm), q, false, q, 0, 0};
+        Face_cone& cone = cones[S * get(fim, f) + i];
+        cone.apex = sb;
+        try
+        {
+          // no apex found: no path (another component), or a source at q
+          cone.offset = CGAL::to_double(sp.shortest_path_sequence_to_source_points(f, at, bend).first);
+          continue;
+        }
+        catch(const Apex_found&) {}
+        const double w[3] = {CGAL::to_double(bend.towards.x() - q.x()), CGAL::to_double(bend.towards.y() - q.y()),
+                             CGAL::to_double(bend.towards.z() - q.z())};
+        const double wl = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        cone.offset = bend.apex_distance;
+        if(wl == 0) continue; // the sample is the apex
+        const double apex[3] = {CGAL::to_double(q.x()) + bend.length * w[0] / wl,
+                                CGAL::to_double(q.y()) + bend.length * w[1] / wl,
+                                CGAL::to_double(q.z()) + bend.length * w[2] / wl};
+        cone.apex = barycentric_in_plane(p, apex);
+      }
+    }
+  }
+
+  // Barycentric coordinates of x (in the plane of triangle p) in the triangle.
+  template <class Point_3>
+  static std::array<double, 3> barycentric_in_plane(const Point_3 (&p)[3], const double (&x)[3])
+  {
+    double a[3], b[3], c[3];
+    const double p0[3] = {CGAL::to_double(p[0].x()), CGAL::to_double(p[0].y()), CGAL::to_double(p[0].z())};
+    const double p1[3] = {CGAL::to_double(p[1].x()), CGAL::to_double(p[1].y()), CGAL::to_double(p[1].z())};
+    const double p2[3] = {CGAL::to_double(p[2].x()), CGAL::to_double(p[2].y()), CGAL::to_double(p[2].z())};
+    for(int k = 0; k < 3; ++k) { a[k] = p1[k] - p0[k]; b[k] = p2[k] - p0[k]; c[k] = x[k] - p0[k]; }
+    // solve c = u a + v b in the least-squares sense (x lies in the plane)
+    const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2], bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2],
+                 ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2], ca = c[0] * a[0] + c[1] * a[1] + c[2] * a[2],
+                 cb = c[0] * b[0] + c[1] * b[1] + c[2] * b[2];
+    const double det = aa * bb - ab * ab;
+    const double u = (ca * bb - cb * ab) / det, v = (cb * aa - ca * ab) / det;
+    return {{1 - u - v, u, v}};
+  }
 
   template <class TriangleMesh, class Solver, class VertexDistanceMap>
   static void solve(const TriangleMesh& tm, Solver& sp, VertexDistanceMap distance)
