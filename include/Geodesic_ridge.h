@@ -13,6 +13,9 @@
 #include <Geodesic_ridge/lower_envelope.h>
 #include <Geodesic_ridge/ridge_curve.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/distance_field.h>
+#include <Geodesic_ridge/refined_mesh.h>
+#include <Geodesic_ridge/isolines.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>
 #include <Geodesic_ridge/solvers/Fast_marching_solver.h>
 #include <Geodesic_ridge/IO/png.h>
