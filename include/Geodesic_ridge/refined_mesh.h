@@ -16,6 +16,7 @@
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 #include <Geodesic_ridge/distance_field.h>
 #include <Geodesic_ridge/lower_envelope.h>
+#include <Geodesic_ridge/internal/faces_by_index.h>
 #include <Geodesic_ridge/parameters.h>
 
 #include <CGAL/Gmpq.h>
@@ -121,9 +122,6 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename GT::face_descriptor face_descriptor;
   typedef boost::graph_traits<MutableFaceGraph> OGT;
   typedef typename OGT::vertex_descriptor out_vertex;
   typedef typename OGT::face_descriptor out_face;
@@ -139,11 +137,9 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
                                         get_property_map(CGAL::vertex_point, out));
   auto distance_out = choose_parameter(get_parameter(np_out, internal_np::vertex_distance_map_t()),
                                        CGAL::Constant_property_map<out_vertex, double>(0));
-  typedef typename GT::edge_descriptor in_edge;
   auto constrained_out = choose_parameter(get_parameter(np_out, CGAL::internal_np::edge_is_constrained),
                                           CGAL::Constant_property_map<typename OGT::edge_descriptor, bool>(false));
   auto visitor = choose_parameter(get_parameter(np_out, CGAL::internal_np::visitor), Default_refinement_visitor());
-  (void)sizeof(in_edge);
 
   const std::size_t nf = num_faces(tm), nv = num_vertices(tm), ne = num_edges(tm);
   if(ridge.regions.size() != nf || ridge.vertex_distances.size() != nv)
@@ -152,17 +148,10 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
   const auto field = make_distance_field(tm, ridge, np_in);
   Refined_mesh_statistics st;
 
-  std::vector<face_descriptor> face_of(nf);
-  for(face_descriptor f : faces(tm)) face_of[get(fim, f)] = f;
-  auto corner_halfedges = [&](std::size_t f) {
-    const halfedge_descriptor h0 = halfedge(face_of[f], tm);
-    return std::array<halfedge_descriptor, 3>{{h0, next(h0, tm), next(next(h0, tm), tm)}};
-  };
-  auto corner_points = [&](std::size_t f) {
-    const auto h = corner_halfedges(f);
-    return std::array<Point, 3>{{get(vpm_in, source(h[0], tm)), get(vpm_in, source(h[1], tm)),
-                                 get(vpm_in, source(h[2], tm))}};
-  };
+  const internal::Faces_by_index<TriangleMesh, std::decay_t<decltype(vpm_in)> > faces_by_index(tm, vpm_in, fim);
+  auto face_of = [&](std::size_t f) { return faces_by_index.face(f); };
+  auto corner_halfedges = [&](std::size_t f) { return faces_by_index.corner_halfedges(f); };
+  auto corner_points = [&](std::size_t f) { return faces_by_index.corner_points(f); };
   // edge k of a face runs from corner k to corner k+1; its parameter t runs
   // from the endpoint of smaller vertex index
   auto edge_parameter = [&](std::size_t f, int k, const auto& lambda) {
@@ -223,7 +212,7 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
     return v;
   };
   auto record_value = [&](out_vertex v, std::size_t f, const std::array<double, 3>& lambda) {
-    const double d = field.distance(std::make_pair(face_of[f], lambda));
+    const double d = field.distance(std::make_pair(face_of(f), lambda));
     auto& r = value_range[order_of[v]];
     r.first = (std::min)(r.first, d);
     r.second = (std::max)(r.second, d);
@@ -278,7 +267,7 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
     const out_face nfce = CGAL::Euler::add_face(std::array<out_vertex, 3>{{a, b, c}}, out);
     if(nfce == OGT::null_face())
       throw Algorithm_error("the refined mesh could not be assembled at face " + std::to_string(f));
-    visitor.face_created(face_of[f], nfce);
+    visitor.face_created(face_of(f), nfce);
   };
   const Exact_barycentric corner[3] = {{{Q(1), Q(0), Q(0)}}, {{Q(0), Q(1), Q(0)}}, {{Q(0), Q(0), Q(1)}}};
   for(std::size_t f = 0; f < nf; ++f)

@@ -17,6 +17,7 @@
 #include <Geodesic_ridge/internal/graph_polylines.h>
 #include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/lower_envelope.h>
+#include <Geodesic_ridge/internal/faces_by_index.h>
 
 #include <CGAL/Gmpq.h>
 
@@ -125,24 +126,15 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename GT::face_descriptor face_descriptor;
   typedef Exact_number Q;
   const std::size_t nf = num_faces(tm), ne = num_edges(tm);
   // equal fields within this are one front (solver noise)
   const double same_front_tolerance = 1e-6 * mean_edge;
 
   // faces by index, with corner points and halfedges
-  std::vector<face_descriptor> face_of(nf);
-  for(face_descriptor f : faces(tm)) face_of[get(fim, f)] = f;
-  auto corner_halfedges = [&](std::size_t f) {
-    const halfedge_descriptor h0 = halfedge(face_of[f], tm);
-    return std::array<halfedge_descriptor, 3>{{h0, next(h0, tm), next(next(h0, tm), tm)}};
-  };
-  auto corner_points = [&](std::size_t f) {
-    const auto h = corner_halfedges(f);
-    return std::array<Point, 3>{{get(vpm, source(h[0], tm)), get(vpm, source(h[1], tm)),
-                                 get(vpm, source(h[2], tm))}};
-  };
+  const internal::Faces_by_index<TriangleMesh, std::decay_t<decltype(vpm)> > faces_by_index(tm, vpm, fim);
+  auto corner_halfedges = [&](std::size_t f) { return faces_by_index.corner_halfedges(f); };
+  auto corner_points = [&](std::size_t f) { return faces_by_index.corner_points(f); };
   auto same_field = [&](const std::array<double, 3>& a, const std::array<double, 3>& b) {
     return std::abs(a[0] - b[0]) <= same_front_tolerance && std::abs(a[1] - b[1]) <= same_front_tolerance &&
            std::abs(a[2] - b[2]) <= same_front_tolerance;

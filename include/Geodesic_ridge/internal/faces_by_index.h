@@ -1,0 +1,54 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+#ifndef GEODESIC_RIDGE_INTERNAL_FACES_BY_INDEX_H
+#define GEODESIC_RIDGE_INTERNAL_FACES_BY_INDEX_H
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <array>
+#include <vector>
+
+namespace Geodesic_ridge {
+namespace internal {
+
+/// The faces of a triangle mesh by face index, with their corners in the
+/// order of a `Face_location`: corner k is source(next^k(halfedge(f))).
+template <class TriangleMesh, class VertexPointMap>
+class Faces_by_index
+{
+public:
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+
+  template <class FaceIndexMap>
+  Faces_by_index(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim)
+      : tm_(tm), vpm_(vpm), face_of_(num_faces(tm))
+  {
+    for(face_descriptor f : faces(tm)) face_of_[get(fim, f)] = f;
+  }
+
+  face_descriptor face(std::size_t f) const { return face_of_[f]; }
+
+  std::array<halfedge_descriptor, 3> corner_halfedges(std::size_t f) const
+  {
+    const halfedge_descriptor h0 = halfedge(face_of_[f], tm_);
+    return {{h0, next(h0, tm_), next(next(h0, tm_), tm_)}};
+  }
+
+  std::array<Point, 3> corner_points(std::size_t f) const
+  {
+    const auto h = corner_halfedges(f);
+    return {{get(vpm_, source(h[0], tm_)), get(vpm_, source(h[1], tm_)), get(vpm_, source(h[2], tm_))}};
+  }
+
+private:
+  const TriangleMesh& tm_;
+  VertexPointMap vpm_;
+  std::vector<face_descriptor> face_of_;
+};
+
+} // namespace internal
+} // namespace Geodesic_ridge
+
+#endif
