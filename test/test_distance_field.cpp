@@ -553,3 +553,35 @@ TEST_CASE("cone field: exact on the doubly covered square, far better than linea
                       m, vertex_descriptor(0), p::field(Geodesic_ridge::Field::cone, p::solver(Geodesic_ridge::Fast_marching_solver()))),
                   Geodesic_ridge::Invalid_parameter_error);
 }
+
+TEST_CASE("refined mesh: points of a neighbour's cells on a side make a conforming star", "[distance_field]")
+{
+  // A tetrahedron whose face 0 holds two copies that cross inside it (and on
+  // two of its edges); the other faces hold one copy each, so the crossing
+  // points on face 0's edges lie inside their neighbours' sides.
+  const std::vector<Point_3> points = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(0, 0, 1)};
+  const std::vector<std::array<std::size_t, 3> > triangles = {{{0, 2, 1}}, {{0, 1, 3}}, {{1, 2, 3}}, {{0, 3, 2}}};
+  const Mesh m = mesh_from_soup(points, triangles);
+  Ridge rc;
+  rc.regions.resize(m.number_of_faces());
+  rc.vertex_distances.assign(m.number_of_vertices(), 1.0);
+  for(face_descriptor f : m.faces())
+  {
+    Geodesic_ridge::Ridge_region_cell cell;
+    cell.copy = std::size_t(f);
+    cell.field = {{1.0, 1.0, 1.0}};
+    rc.regions[std::size_t(f)].push_back(cell);
+  }
+  // face 0: fields (0.6, 1.4, 1.0) and (1.4, 0.6, 1.0) cross on the line λ0 = λ1
+  rc.regions[0][0].field = {{0.6, 1.4, 1.0}};
+  Geodesic_ridge::Ridge_region_cell other = rc.regions[0][0];
+  other.copy = 99;
+  other.field = {{1.4, 0.6, 1.0}};
+  rc.regions[0].push_back(other);
+  const Refined r = refine(m, rc);
+  INFO("split faces " << r.statistics.split_faces << ", centre vertices " << r.statistics.centre_vertices
+                      << ", faces " << r.statistics.faces);
+  CHECK(r.statistics.split_faces >= 2);
+  CHECK(r.statistics.centre_vertices >= 1);
+  check_refined_mesh(m, rc, r, "tetrahedron with two crossing copies on face 0", false);
+}
