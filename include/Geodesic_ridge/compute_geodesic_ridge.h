@@ -302,37 +302,27 @@ std::vector<std::array<double, 3> > corner_distances(const Extended_surface<Poin
   return out;
 }
 
-// the distances from the source over E, by vertex index of E; and the cones
-// of the copies that no other copy dominates, if asked for (the solver must
-// offer them)
+// the distances from the source over E, by vertex index of E
 template <class Point, class Solver>
-void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vector<double>& distance,
-              std::vector<Face_cone>* cones = nullptr, std::size_t number_of_faces = 0)
+void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vector<double>& distance)
 {
-  if(cones)
-  {
-    if constexpr(std::is_same<std::decay_t<Solver>, Exact_solver>::value)
-    {
-      // called by the solver once `distance` is written
-      std::vector<char> undominated;
-      auto wanted = [&](std::size_t copy) {
-        if(undominated.empty())
-        {
-          undominated.assign(E.mesh.number_of_faces(), 0);
-          for(const Face_copies& fc : undominated_copies(E, corner_distances(E, distance), number_of_faces))
-            for(std::size_t c : fc.copies) undominated[c] = 1;
-        }
-        return undominated[copy] != 0;
-      };
-      if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance), *cones, wanted);
-      else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), *cones, wanted);
-      return;
-    }
-    else
-      throw Invalid_parameter_error(std::string("the cone field needs the exact solver, not '") + solver.name() + "'");
-  }
   if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance));
   else solver(E.mesh, E.source_location, CGAL::make_property_map(distance));
+}
+
+// Same, and the cones of the copies for which wanted(copy) is true (called by
+// the solver once `distance` is written); the solver must offer cones.
+template <class Point, class Solver, class Wanted>
+void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vector<double>& distance,
+              std::vector<Face_cone>& cones, const Wanted& wanted)
+{
+  if constexpr(std::is_same<std::decay_t<Solver>, Exact_solver>::value)
+  {
+    if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance), cones, wanted);
+    else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), cones, wanted);
+  }
+  else
+    throw Invalid_parameter_error(std::string("the cone field needs the exact solver, not '") + solver.name() + "'");
 }
 
 // Fast marching over E from the corners of its first `anchor.size()` copies,
@@ -396,6 +386,7 @@ void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_sou
   Pass pass = schedule.predicted && !solver_is_fast_marching ? Pass::predicted : Pass::solve;
   bool grown = true;
   std::vector<std::array<double, 3> > anchor; // per copy, at the last solve: its corner distances
+  bool cones_read = false; // at the last solve, for the copies of E now
   for(;;)
   {
     auto t0 = std::chrono::steady_clock::now();
@@ -403,22 +394,61 @@ void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_sou
     grown = false;
     st.time_extension += seconds_since(t0);
 
-    t0 = std::chrono::steady_clock::now();
+    // the pass's distances, and what they say: the undominated copies of
+    // every face, and the copies still winning on E's border
     std::vector<double> distance(E.mesh.number_of_vertices());
-    if(pass == Pass::solve) { solve_on(E, solver, distance, cones, num_faces(tm)); ++st.solves; }
+    std::vector<std::array<double, 3> > corners;
+    std::vector<char> grow_from;
+    std::size_t winning = 0;
+    double analysis_time = 0;
+    bool analysed = false;
+    auto analyse = [&]() {
+      if(analysed) return;
+      const auto ta = std::chrono::steady_clock::now();
+      corners = corner_distances(E, distance);
+      face_copies = undominated_copies(E, corners, num_faces(tm));
+      const double slack = pass == Pass::solve && solver_is_exact ? exact_slack_on_border : fast_marching_slack;
+      grow_from = copies_winning_on_border(across, E, face_copies, slack);
+      winning = static_cast<std::size_t>(std::count(grow_from.begin(), grow_from.end(), 1));
+      analysis_time = seconds_since(ta);
+      analysed = true;
+    };
+    // after this pass, is E grown again (else it is final)?
+    auto grows = [&](int solves_done) {
+      const bool solves_left = pass != Pass::solve || solver_is_fast_marching || solves_done < schedule.maximum_solves;
+      return winning > 0 && solves_left && builder.statistics().rings < schedule.maximum_rings;
+    };
+
+    t0 = std::chrono::steady_clock::now();
+    if(pass == Pass::solve && cones)
+    {
+      // the cones of the undominated copies, read only at a solve after which
+      // E stays as it is (the solver calls `wanted` once the distances are in)
+      std::vector<char> keep;
+      auto wanted = [&](std::size_t copy) {
+        if(keep.empty())
+        {
+          analyse();
+          keep.assign(E.mesh.number_of_faces(), 0);
+          cones_read = !grows(st.solves + 1);
+          if(cones_read)
+            for(const Face_copies& fc : face_copies)
+              for(std::size_t c : fc.copies) keep[c] = 1;
+        }
+        return keep[copy] != 0;
+      };
+      solve_on(E, solver, distance, *cones, wanted);
+      ++st.solves;
+    }
+    else if(pass == Pass::solve) { solve_on(E, solver, distance); ++st.solves; }
     else if(pass == Pass::predicted) { solve_on(E, Fast_marching_solver(), distance); ++st.predicted_passes; }
     else { fast_marching_from_anchors(E, anchor, distance); ++st.predicted_passes; }
-    st.time_solve += seconds_since(t0);
+    st.time_solve += seconds_since(t0) - analysis_time;
     if(pass == Pass::solve && E.source_is_vertex && distance[E.source_vertex] != 0)
       throw Algorithm_error("the solver's distance at the source is not 0");
 
-    t0 = std::chrono::steady_clock::now();
-    std::vector<std::array<double, 3> > corners = corner_distances(E, distance);
-    face_copies = undominated_copies(E, corners, num_faces(tm));
-    const double slack = pass == Pass::solve && solver_is_exact ? exact_slack_on_border : fast_marching_slack;
-    std::vector<char> grow_from = copies_winning_on_border(across, E, face_copies, slack);
-    const std::size_t winning = static_cast<std::size_t>(std::count(grow_from.begin(), grow_from.end(), 1));
-    st.time_envelope += seconds_since(t0);
+    analyse();
+    st.time_envelope += analysis_time;
     if(pass == Pass::solve)
     {
       st.outer_copies_winning = winning;
@@ -428,8 +458,7 @@ void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_sou
 
     // grow a band of `extension_step` rings around them (each ring from the
     // copies the previous one added), unless E is final
-    const bool solves_left = pass != Pass::solve || solver_is_fast_marching || st.solves < schedule.maximum_solves;
-    if(winning > 0 && solves_left && builder.statistics().rings < schedule.maximum_rings)
+    if(grows(st.solves))
     {
       t0 = std::chrono::steady_clock::now();
       const std::size_t before_band = builder.number_of_copies();
@@ -456,6 +485,19 @@ void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_sou
     // E is final for now: done if the solver has solved it, else solve
     if(pass == Pass::solve || builder.number_of_copies() == anchor.size()) break;
     pass = Pass::solve;
+  }
+  if(cones && !cones_read)
+  {
+    // the last solve expected E to grow, and it could not (a leaf's winding
+    // bound): read the cones on E as it is, with one more solve
+    std::vector<double> distance(E.mesh.number_of_vertices());
+    std::vector<char> keep(E.mesh.number_of_faces(), 0);
+    for(const Face_copies& fc : face_copies)
+      for(std::size_t c : fc.copies) keep[c] = 1;
+    const auto t0 = std::chrono::steady_clock::now();
+    solve_on(E, solver, distance, *cones, [&](std::size_t copy) { return keep[copy] != 0; });
+    ++st.solves;
+    st.time_solve += seconds_since(t0);
   }
   st.ring_cap_hit = st.outer_copies_winning > 0 && builder.statistics().rings >= schedule.maximum_rings;
 }
