@@ -517,8 +517,12 @@ int run(const Options& o)
             << g.ridge.free_ends << " free ends, " << g.ridge.cycles << " cycles, length "
             << g.ridge.total_length << "; " << g.time_total << " s\n";
   // the region-wise field, and the refined mesh where something needs it
+  // queries answer from the chosen field; the rest is linear
   const auto field = Geodesic_ridge::make_distance_field(mesh, *ridge);
-  const auto query_field = Geodesic_ridge::make_distance_field(mesh, *ridge, Geodesic_ridge::parameters::field(o.field));
+  std::optional<std::decay_t<decltype(field)> > cone_field;
+  if(o.field == Geodesic_ridge::Field::cone)
+    cone_field = Geodesic_ridge::make_distance_field(mesh, *ridge, Geodesic_ridge::parameters::field(o.field));
+  const auto& query_field = cone_field ? *cone_field : field;
   Mesh refined;
   std::optional<Geodesic_ridge::Refined_mesh_statistics> refined_stats;
   auto refined_distance = refined.add_property_map<vertex_descriptor, double>("v:distance", 0).first;

@@ -87,6 +87,50 @@ namespace internal {
 // index) | (2, face, λ1, λ2), as stage 3 keys its nodes.
 typedef std::tuple<int, std::size_t, CGAL::Gmpq, CGAL::Gmpq> Exact_point_key;
 typedef std::tuple<int, std::size_t, double, double> Rounded_point_key;
+typedef std::array<CGAL::Gmpq, 3> Exact_barycentric;
+
+// The cells of a face's envelope as exact polygons (the polygons of
+// `Ridge_curve::regions` are rounded), recomputed from the cells' fields.
+inline std::vector<std::vector<Exact_barycentric> > exact_cells(const std::vector<Ridge_region_cell>& cells)
+{
+  std::vector<std::array<double, 3> > fields;
+  for(const auto& c : cells) fields.push_back(c.field);
+  std::vector<std::vector<Exact_barycentric> > polygons;
+  Lower_envelope<CGAL::Gmpq> envelope = compute_lower_envelope<CGAL::Gmpq>(fields);
+  for(auto& cell : envelope.cells) polygons.push_back(std::move(cell.polygon));
+  return polygons;
+}
+
+// The points of `points` strictly inside the segment ab, in order from a,
+// each once (exact tests).
+inline std::vector<const Exact_barycentric*> points_inside_side(const Exact_barycentric& a, const Exact_barycentric& b,
+                                                               const std::vector<Exact_barycentric>& points)
+{
+  typedef CGAL::Gmpq Q;
+  std::vector<std::pair<Q, const Exact_barycentric*> > inside;
+  const Q d1 = b[1] - a[1], d2 = b[2] - a[2];
+  for(const Exact_barycentric& p : points)
+  {
+    // p = a + s (b - a) with 0 < s < 1
+    if((p[1] - a[1]) * d2 - (p[2] - a[2]) * d1 != 0) continue;
+    const Q s = d1 != 0 ? (p[1] - a[1]) / d1 : (p[2] - a[2]) / d2;
+    if(s > 0 && s < 1) inside.emplace_back(s, &p);
+  }
+  std::sort(inside.begin(), inside.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<const Exact_barycentric*> out;
+  for(std::size_t i = 0; i < inside.size(); ++i)
+    if(i == 0 || inside[i].first != inside[i - 1].first) out.push_back(inside[i].second);
+  return out;
+}
+
+inline Exact_barycentric centroid(const std::vector<Exact_barycentric>& polygon)
+{
+  Exact_barycentric c = {{CGAL::Gmpq(0), CGAL::Gmpq(0), CGAL::Gmpq(0)}};
+  for(const auto& p : polygon)
+    for(int k = 0; k < 3; ++k) c[k] += p[k];
+  for(int k = 0; k < 3; ++k) c[k] /= CGAL::Gmpq(static_cast<int>(polygon.size()));
+  return c;
+}
 
 } // namespace internal
 
@@ -126,7 +170,7 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
   typedef typename OGT::vertex_descriptor out_vertex;
   typedef typename OGT::face_descriptor out_face;
   typedef CGAL::Gmpq Q;
-  typedef std::array<Q, 3> Exact_barycentric;
+  typedef internal::Exact_barycentric Exact_barycentric;
 
   const auto vpm = CGAL::get_const_property_map(CGAL::vertex_point, tm);
   const auto vpm_in = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point), vpm);
@@ -176,14 +220,11 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
   {
     const auto& cells = ridge.regions[f];
     if(cells.size() < 2) continue;
-    std::vector<std::array<double, 3> > fields;
-    for(const auto& c : cells) fields.push_back(c.field);
-    const Lower_envelope<Q> envelope = compute_lower_envelope<Q>(fields);
+    polygons[f] = internal::exact_cells(cells);
     const auto h = corner_halfedges(f);
-    for(const auto& cell : envelope.cells)
+    for(const auto& polygon : polygons[f])
     {
-      polygons[f].push_back(cell.polygon);
-      for(const auto& p : cell.polygon)
+      for(const auto& p : polygon)
       {
         const int feature = feature_of(p);
         if(feature >= 0 && feature < 3)
@@ -202,18 +243,17 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
   std::vector<out_vertex> vertex_of_mesh_vertex(nv, OGT::null_vertex());
   std::map<internal::Exact_point_key, out_vertex> vertex_of_point;
   std::map<internal::Rounded_point_key, out_vertex> vertex_of_rounded; // to find the ridge's points
-  std::vector<std::pair<double, double> > value_range; // per output vertex (by creation order)
-  std::map<out_vertex, std::size_t> order_of;           // output vertex -> creation order
+  std::map<out_vertex, std::pair<double, double> > value_range; // smallest and largest value given
   auto new_vertex = [&](const Point& p) {
     const out_vertex v = add_vertex(out);
     put(vpm_out, v, p);
-    order_of.emplace(v, value_range.size());
-    value_range.emplace_back(std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
+    value_range.emplace(v, std::make_pair(std::numeric_limits<double>::infinity(),
+                                          -std::numeric_limits<double>::infinity()));
     return v;
   };
   auto record_value = [&](out_vertex v, std::size_t f, const std::array<double, 3>& lambda) {
     const double d = field.distance(std::make_pair(face_of(f), lambda));
-    auto& r = value_range[order_of[v]];
+    auto& r = value_range[v];
     r.first = (std::min)(r.first, d);
     r.second = (std::max)(r.second, d);
   };
@@ -300,35 +340,19 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
     for(const auto& polygon : polygons[f])
     {
       // the cell's boundary with the points inside its sides
-      std::vector<Exact_barycentric> loop;
       std::vector<out_vertex> loop_vertices;
       for(std::size_t i = 0; i < polygon.size(); ++i)
       {
         const Exact_barycentric& a = polygon[i];
         const Exact_barycentric& b = polygon[(i + 1) % polygon.size()];
-        std::vector<std::pair<Q, const Exact_barycentric*> > inside;
-        for(const Exact_barycentric& p : points)
-        {
-          // p = a + s (b - a) with 0 < s < 1, exactly
-          const Q d1 = b[1] - a[1], d2 = b[2] - a[2];
-          const Q cross = (p[1] - a[1]) * d2 - (p[2] - a[2]) * d1;
-          if(cross != 0) continue;
-          const Q s = d1 != 0 ? (p[1] - a[1]) / d1 : (p[2] - a[2]) / d2;
-          if(s > 0 && s < 1) inside.emplace_back(s, &p);
-        }
-        std::sort(inside.begin(), inside.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-        inside.erase(std::unique(inside.begin(), inside.end(),
-                                 [](const auto& x, const auto& y) { return x.first == y.first; }),
-                     inside.end());
-        loop.push_back(a);
+        const auto inside = internal::points_inside_side(a, b, points);
         loop_vertices.push_back(vertex_at(f, a));
         if(!inside.empty())
         {
           std::vector<out_vertex> chain{loop_vertices.back()};
-          for(const auto& sp : inside)
+          for(const Exact_barycentric* p : inside)
           {
-            loop.push_back(*sp.second);
-            loop_vertices.push_back(vertex_at(f, *sp.second));
+            loop_vertices.push_back(vertex_at(f, *p));
             chain.push_back(loop_vertices.back());
           }
           const out_vertex vb = vertex_at(f, b);
@@ -337,23 +361,18 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
           chain_of_side[std::make_pair(chain.front(), chain.back())] = chain;
         }
       }
-      if(loop.size() == polygon.size())
+      const std::size_t n = loop_vertices.size();
+      if(n == polygon.size())
       {
         // a convex polygon with true corners only: a fan
-        for(std::size_t i = 1; i + 1 < loop.size(); ++i)
-          add_triangle(f, loop_vertices[0], loop_vertices[i], loop_vertices[i + 1]);
+        for(std::size_t i = 1; i + 1 < n; ++i) add_triangle(f, loop_vertices[0], loop_vertices[i], loop_vertices[i + 1]);
       }
       else
       {
         // points inside sides: a star from the centre, so no triangle is flat
-        Exact_barycentric centre = {{Q(0), Q(0), Q(0)}};
-        for(const auto& p : polygon)
-          for(int k = 0; k < 3; ++k) centre[k] += p[k];
-        for(int k = 0; k < 3; ++k) centre[k] /= Q(static_cast<int>(polygon.size()));
-        const out_vertex c = vertex_at(f, centre);
+        const out_vertex c = vertex_at(f, internal::centroid(polygon));
         ++st.centre_vertices;
-        for(std::size_t i = 0; i < loop.size(); ++i)
-          add_triangle(f, c, loop_vertices[i], loop_vertices[(i + 1) % loop.size()]);
+        for(std::size_t i = 0; i < n; ++i) add_triangle(f, c, loop_vertices[i], loop_vertices[(i + 1) % n]);
       }
     }
   }
@@ -361,7 +380,7 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
   // ---- one distance per vertex: the smallest of the faces' values
   for(out_vertex v : vertices(out))
   {
-    const auto& r = value_range[order_of[v]];
+    const auto& r = value_range[v];
     put(distance_out, v, r.first);
     st.largest_disagreement = (std::max)(st.largest_disagreement, r.second - r.first);
   }
