@@ -6,8 +6,11 @@
 //
 //   bench_ridge_accuracy [--max-faces N] [--tolerance T] [--recall-tolerance T]
 //                        [--sources-per-mesh N] [--random-sources R] [--seed S]
-//                        [--solver exact|fmm|both] [--diagnose] [--no-reference] [--source-vertex V]...
+//                        [--solver exact|fmm|cone|both|exact+cone] [--diagnose] [--no-reference] [--source-vertex V]...
 //                        [--spacing S] [--min-jump DEG] [--outliers] [pipeline options] [MESH ...]
+//
+// Solver 'cone': the exact solver with the cone field, measuring the cone
+// ridge (`Ridge_curve::cone_polylines`); 'exact+cone' runs both.
 //
 // Without MESH arguments it runs every .off file of ../shared/data (or of the
 // repository's data/ when ../shared is absent) with at most N faces (default
@@ -146,7 +149,8 @@ int main(int argc, char** argv)
     {
       const std::string s = argv[++i];
       if(s == "both") solvers = {"exact", "fmm"};
-      else if(s == "exact" || s == "fmm") solvers = {s};
+      else if(s == "exact+cone") solvers = {"exact", "cone"};
+      else if(s == "exact" || s == "fmm" || s == "cone") solvers = {s};
       else { std::cerr << "unknown solver " << s << "\n"; return 2; }
     }
     else if(a == "--spacing" && i + 1 < argc) ref_opt.spacing = std::stod(argv[++i]);
@@ -225,7 +229,14 @@ int main(int argc, char** argv)
                                    : Geodesic_ridge::compute_ridge_curve(mesh, src.location, np);
             };
             if(solver == "fmm") return compute(p::solver(Geodesic_ridge::Fast_marching_solver(), options.parameters(t)));
+            if(solver == "cone")
+              return compute(p::field(Geodesic_ridge::Field::cone,
+                                      p::solver(Geodesic_ridge::Exact_solver(), options.parameters(t))));
             return compute(p::solver(Geodesic_ridge::Exact_solver(), options.parameters(t)));
+          };
+          // the ridge measured: with 'cone', the cone field's
+          auto measured = [&](const auto& rc) -> const auto& {
+            return solver == "cone" ? rc.cone_polylines : rc.polylines;
           };
           const auto t0 = std::chrono::steady_clock::now();
           const auto rc = run(tolerance);
@@ -236,13 +247,13 @@ int main(int argc, char** argv)
           winning = rc.statistics.outer_copies_winning;
           if(reference)
           {
-            const auto acc = GT::ridge_accuracy(ref, rc.polylines, ref_opt);
+            const auto acc = GT::ridge_accuracy(ref, measured(rc), ref_opt);
             r.precision_major_p95 = acc.precision_p95;
             r.precision_all_p95 = acc.precision_all_p95;
             r.recall_p95 = acc.recall_p95;
             precision_max = acc.precision_max;
             const auto rc_small = run(recall_tolerance);
-            r.recall_small_p95 = GT::ridge_accuracy(ref, rc_small.polylines, ref_opt).recall_p95;
+            r.recall_small_p95 = GT::ridge_accuracy(ref, measured(rc_small), ref_opt).recall_p95;
             if(outliers && !acc.outliers.empty())
             {
               std::size_t near_leaf = 0, near_junction = 0, near_source = 0, minor = 0;
@@ -261,7 +272,7 @@ int main(int argc, char** argv)
           if(diagnose)
           {
             r.diagnosed = true;
-            const bool exact = solver == "exact";
+            const bool exact = solver != "fmm";
             const GT::Extension_check check =
                 exact ? GT::check_extension(mesh, rc, exact_on_mesh, 1e-9)
                       : GT::check_extension(mesh, rc, on_mesh_of(false), fmm_tolerance, fmm_skip_rings);

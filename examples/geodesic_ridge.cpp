@@ -85,8 +85,9 @@ const char* usage_text =
     "  --query-out OUT   the distances, one per line in the order of IN, 17 digits\n"
     "  --field KIND      the field the queries evaluate: linear (default, the paper's\n"
     "                    region-wise linear field) or cone (exact solver only: per face\n"
-    "                    copy, the exact solver's cones; the refined mesh, the iso-lines\n"
-    "                    and the picture stay linear)\n"
+    "                    copy, the exact solver's cones; --ridge, --ridge-locations and the\n"
+    "                    picture's ridge are where the cones meet; the refined mesh, the\n"
+    "                    iso-lines and the picture's colours stay linear)\n"
     "  --rough-cut OUT   write the rough cut locus K (stage 1) as CGAL polylines\n"
     "  --stats OUT.json  write counts, timings and parameters as JSON\n"
     "  --png OUT.png     picture: the mesh from two opposite sides coloured by the distance\n"
@@ -436,6 +437,14 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
      << "    \"pruned_flat_end_segments\": " << q.pruned_flat_end_segments << ",\n"
      << "    \"dropped_components\": " << q.dropped_components << "\n"
      << "  },\n";
+  if(!rc.cone_polylines.empty())
+  {
+    const auto& c = g.cone_ridge;
+    os << "  \"cone_ridge\": {\"tolerance\": " << json_number(c.tolerance) << ", \"points_moved\": " << c.points_moved
+       << ", \"junctions_moved\": " << c.junctions_moved << ", \"points_kept\": " << c.points_kept
+       << ", \"points_added\": " << c.points_added << ", \"largest_move_mean_edges\": " << json_number(c.largest_move)
+       << ", \"time\": " << json_number(c.time) << "},\n";
+  }
   if(refined)
     os << "  \"refined_mesh\": {\"vertices\": " << refined->vertices << ", \"faces\": " << refined->faces
        << ", \"split_faces\": " << refined->split_faces << ", \"centre_vertices\": " << refined->centre_vertices
@@ -516,6 +525,12 @@ int run(const Options& o)
             << "ridge: " << ridge->polylines.size() << " polylines, " << g.ridge.junctions << " junctions, "
             << g.ridge.free_ends << " free ends, " << g.ridge.cycles << " cycles, length "
             << g.ridge.total_length << "; " << g.time_total << " s\n";
+  // the ridge written and drawn: with the cone field, the cones' own
+  const auto& reported = o.field == Geodesic_ridge::Field::cone ? ridge->cone_polylines : ridge->polylines;
+  if(o.field == Geodesic_ridge::Field::cone)
+    std::cout << "cone ridge: " << g.cone_ridge.points_moved << " points and " << g.cone_ridge.junctions_moved
+              << " junctions moved onto the cones' curves, " << g.cone_ridge.points_kept << " kept, "
+              << g.cone_ridge.points_added << " added (tolerance " << g.cone_ridge.tolerance << ")\n";
   // the region-wise field, and the refined mesh where something needs it
   // queries answer from the chosen field; the rest is linear
   const auto field = Geodesic_ridge::make_distance_field(mesh, *ridge);
@@ -571,7 +586,7 @@ int run(const Options& o)
           "# ANGLE: degrees between the two fronts; one polyline after another, '# polyline' between\n";
     os.precision(17);
     std::size_t points = 0;
-    for(const auto& pl : ridge->polylines)
+    for(const auto& pl : reported)
     {
       os << "# polyline\n";
       for(const auto& p : pl)
@@ -619,7 +634,7 @@ int run(const Options& o)
   if(!o.ridge.empty())
   {
     std::vector<std::vector<Point_3> > polylines;
-    for(const auto& pl : ridge->polylines)
+    for(const auto& pl : reported)
     {
       polylines.emplace_back();
       for(const auto& p : pl) polylines.back().push_back(p.point);
@@ -640,7 +655,7 @@ int run(const Options& o)
     Geodesic_ridge::cut_graph_polylines(mesh, r, std::back_inserter(curves[0].polylines));
     curves[0].rgb = {{235, 235, 235}};
     curves[0].width_pixels = 1;
-    for(const auto& pl : ridge->polylines)
+    for(const auto& pl : reported)
     {
       curves[1].polylines.emplace_back();
       for(const auto& p : pl) curves[1].polylines.back().push_back(p.point);

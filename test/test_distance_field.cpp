@@ -585,3 +585,132 @@ TEST_CASE("refined mesh: points of a neighbour's cells on a side make a conformi
   CHECK(r.statistics.centre_vertices >= 1);
   check_refined_mesh(m, rc, r, "tetrahedron with two crossing copies on face 0", false);
 }
+
+namespace {
+
+// Largest distance from the ridge (its points and 8 samples per chord) to the
+// analytic cut locus of the doubly covered square (a point on the top sheet
+// counts at least its distance to the border).
+double square_ridge_error(const Doubly_covered_square& sq, const Doubly_covered_square_oracle& oracle,
+                          const std::vector<std::vector<Geodesic_ridge::Ridge_point<Point_3> > >& polylines)
+{
+  double worst = 0;
+  for(const auto& pl : polylines)
+    for(std::size_t i = 0; i < pl.size(); ++i)
+      for(int j = 0; j < (i + 1 < pl.size() ? 8 : 1); ++j)
+      {
+        const double t = j / 8.0;
+        const Point_3& a = pl[i].point;
+        const Point_3& b = i + 1 < pl.size() ? pl[i + 1].point : a;
+        const double x = a.x() + t * (b.x() - a.x()), y = a.y() + t * (b.y() - a.y());
+        double d = oracle.distance_to_cut_locus({{x, y}});
+        if(!sq.bottom_face[pl[i].face])
+          d = std::max(d, std::min(std::min(x, 1 - x), std::min(y, 1 - y)));
+        worst = std::max(worst, d);
+      }
+  return worst;
+}
+
+} // namespace
+
+TEST_CASE("cone ridge: exact on the doubly covered square, the cones agree on it on real meshes", "[distance_field]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  const auto cone = p::field(Geodesic_ridge::Field::cone);
+  // flat sheets: the cones are exact, so is their ridge (straight bisectors of
+  // mirror images, junctions where three of them meet)
+  for(const double perturbation : {0.0, 0.25})
+  {
+    const unsigned seed = test_seed(20261206);
+    const Doubly_covered_square sq = make_doubly_covered_square(16, perturbation, seed);
+    const vertex_descriptor s = sq.top[4 + 17 * 5];
+    const Ridge rc = Geodesic_ridge::compute_ridge_curve(sq.mesh, s, cone);
+    const Doubly_covered_square_oracle oracle(sq.mesh.point(s).x(), sq.mesh.point(s).y());
+    const double cones = square_ridge_error(sq, oracle, rc.cone_polylines);
+    const double linear = square_ridge_error(sq, oracle, rc.polylines);
+    const auto& st = rc.statistics.cone_ridge;
+    INFO("doubly covered square n=16 perturbation " << perturbation << " seed " << seed << ": largest distance to "
+         << "the cut locus, linear ridge " << linear << ", cone ridge " << cones << "; moved " << st.points_moved
+         << ", junctions " << st.junctions_moved << ", kept " << st.points_kept << ", added " << st.points_added);
+    std::cout << "[distance_field] cone ridge on the square, perturbation " << perturbation << ": largest distance "
+              << "to the cut locus " << cones << " (linear ridge " << linear << "), moved " << st.points_moved
+              << ", junctions " << st.junctions_moved << ", kept " << st.points_kept << "\n";
+    CHECK(rc.cone_polylines.size() == rc.polylines.size());
+    CHECK(cones <= 1e-9);
+    CHECK(linear > 100 * cones);
+    CHECK(st.junctions_moved >= 1);
+  }
+  // real meshes: the two lowest cones agree at every moved point; the ends
+  // are those of the linear ridge but for junctions inside faces
+  for(const std::string name : {"bunny_1k.off", "eight.off", "torus_1k.off"})
+  {
+    const Mesh m = read_data_mesh(name);
+    const Ridge rc = Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(100), cone);
+    const double h = mean_edge_length(m);
+    const auto& st = rc.statistics.cone_ridge;
+    REQUIRE(rc.cone_polylines.size() == rc.polylines.size());
+    std::size_t on_curve = 0, interior = 0, continuous = 0;
+    auto kept = [&](const Geodesic_ridge::Ridge_point<Point_3>& q) {
+      for(const auto& pl : rc.polylines)
+        for(const auto& p : pl)
+          if(p.point == q.point) return true;
+      return false;
+    };
+    double largest_gap = 0;
+    for(std::size_t i = 0; i < rc.polylines.size(); ++i)
+    {
+      const auto& lin = rc.polylines[i];
+      const auto& con = rc.cone_polylines[i];
+      REQUIRE(con.size() >= lin.size());
+      CHECK(CGAL::squared_distance(lin.front().point, con.front().point) <= 4 * h * h);
+      CHECK(CGAL::squared_distance(lin.back().point, con.back().point) <= 4 * h * h);
+      for(std::size_t j = 1; j + 1 < con.size(); ++j)
+      {
+        const auto& q = con[j];
+        const auto corners = Geodesic_ridge::internal::Faces_by_index<Mesh, decltype(m.points())>(
+                                 m, m.points(), get(CGAL::face_index, m)).corner_points(q.face);
+        const Geodesic_ridge::internal::Face_plane plane(corners);
+        const auto& cs = rc.cones[q.face];
+        const Geodesic_ridge::internal::Face_cone_field field(plane, cs.data(), cs.size());
+        ++interior;
+        if(kept(q)) continue; // where the linear ridge put it
+        const auto x = plane.point(q.barycentric);
+        std::vector<std::pair<double, std::size_t> > values;
+        for(std::size_t c = 0; c < field.number_of_copies(); ++c) values.push_back({field.value(c, x), c});
+        std::sort(values.begin(), values.end());
+        if(values.size() < 2) continue;
+        // where the two lowest copies keep their cones on a small disc around
+        // the point (no change of window), they must agree at it
+        bool same_cones = true;
+        for(int k = 0; k < 8 && same_cones; ++k)
+        {
+          const double phi = k * CGAL_PI / 4, eps = 1e-6 * h;
+          const std::array<double, 2> y = {{x[0] + eps * std::cos(phi), x[1] + eps * std::sin(phi)}};
+          for(int j = 0; j < 2; ++j)
+            same_cones = same_cones && field.apex(values[j].second, x) == field.apex(values[j].second, y);
+        }
+        if(!same_cones) continue;
+        ++continuous;
+        const double gap = values[1].first - values[0].first;
+        if(gap <= 1e-9 * h) ++on_curve;
+        largest_gap = std::max(largest_gap, gap / h);
+      }
+    }
+    const std::string summary = name + " source 100: of " + std::to_string(interior) + " inner points, " +
+                                std::to_string(continuous) + " moved or added where the two lowest cones stay the same nearby, two cones agree at " +
+                                std::to_string(on_curve) + " (largest gap " + std::to_string(largest_gap) +
+                                " mean edges); moved " + std::to_string(st.points_moved) + ", kept " +
+                                std::to_string(st.points_kept) + ", added " + std::to_string(st.points_added) +
+                                ", junctions " + std::to_string(st.junctions_moved) + ", largest move " +
+                                std::to_string(st.largest_move) + " mean edges";
+    INFO(summary);
+    std::cout << "[distance_field] cone ridge " << summary << "\n";
+    CHECK(on_curve == continuous);
+    CHECK(continuous >= 0.5 * interior);
+    CHECK(st.points_kept <= 0.35 * (st.points_kept + st.points_moved));
+    CHECK(st.largest_move < 1);
+  }
+  CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(read_data_mesh("bunny_1k.off"), vertex_descriptor(0),
+                                                      p::cone_ridge_tolerance(0, cone)),
+                  Geodesic_ridge::Invalid_parameter_error);
+}

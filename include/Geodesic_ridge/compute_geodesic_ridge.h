@@ -6,6 +6,7 @@
 #ifndef GEODESIC_RIDGE_COMPUTE_GEODESIC_RIDGE_H
 #define GEODESIC_RIDGE_COMPUTE_GEODESIC_RIDGE_H
 
+#include <Geodesic_ridge/cone_ridge.h>
 #include <Geodesic_ridge/extended_surface.h>
 #include <Geodesic_ridge/lower_envelope.h>
 #include <Geodesic_ridge/parameters.h>
@@ -37,6 +38,7 @@ struct guided_extension_t {};
 struct tree_from_solver_t {};
 struct predicted_extension_t {};
 struct field_t {};
+struct cone_ridge_tolerance_t {};
 } // namespace internal_np
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -44,6 +46,12 @@ struct field_t {};
 /// corner distances (the paper's), or the cone of the exact solver's window at
 /// its centroid (`Face_cone`; exact solver only).
 enum class Field { linear, cone };
+
+/// Default of `parameters::cone_ridge_tolerance` (mean edge lengths): a
+/// thousandth of an edge, far below the ridge's own uncertainty where the
+/// cones are not exact (faces that several windows share), and reached with
+/// few points (the curve bends little inside one face).
+constexpr double default_cone_ridge_tolerance = 1e-3;
 
 /// Default of `parameters::maximum_rings`.
 constexpr int default_maximum_rings = 256;
@@ -122,6 +130,12 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle)
 /// exact solver reads them from its shortest paths), and the distance field
 /// evaluates them instead of the linear fields.
 GEODESIC_RIDGE_NAMED_PARAMETER(Field, field)
+
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// With `field(Field::cone)`: the cone ridge (`Ridge_curve::cone_polylines`)
+/// is split until the curve is within `t` mean edge lengths of the midpoint of
+/// every chord (default `default_cone_ridge_tolerance`; `t` in (0, 1]).
+GEODESIC_RIDGE_NAMED_PARAMETER(double, cone_ridge_tolerance)
 } // namespace parameters
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -137,6 +151,7 @@ struct Geodesic_ridge_statistics
   Rough_cut_locus_statistics rough_cut_locus;
   Extended_surface_statistics extended_surface;
   Ridge_curve_statistics ridge;
+  Cone_ridge_statistics cone_ridge; ///< with `field(Field::cone)`
   bool tree_from_solver = false; ///< the tree followed the solver's distances on M (else fast marching)
   double time_solve_on_mesh = 0; ///< the distances on M that shape the tree of stage 1
   double time_rough_cut_locus = 0, time_extension = 0, time_solve = 0, time_envelope = 0,
@@ -161,6 +176,10 @@ struct Ridge_curve
   /// with `parameters::field(Field::cone)`, per face of M (by face index): the
   /// cones of its copies that no other copy dominates; empty otherwise
   std::vector<std::vector<Face_cone> > cones;
+  /// with `parameters::field(Field::cone)`: the ridge of the cone field, traced
+  /// from `polylines` (same topology, same ends but the junctions inside faces;
+  /// every chord within `cone_ridge_tolerance` of the curve); empty otherwise
+  std::vector<std::vector<Ridge_point<Point_3> > > cone_polylines;
   Rough_cut_locus<TriangleMesh> rough_cut_locus;
   Geodesic_ridge_statistics statistics;
 };
@@ -525,6 +544,8 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   const Field field_kind = choose_parameter(get_parameter(np, internal_np::field_t()), Field::linear);
   if(field_kind == Field::cone && !std::is_same<std::decay_t<decltype(solver)>, Exact_solver>::value)
     throw Invalid_parameter_error(std::string("the cone field needs the exact solver, not '") + solver.name() + "'");
+  const double cone_ridge_tolerance = get_number_in_range<internal_np::cone_ridge_tolerance_t>(
+      np, default_cone_ridge_tolerance, std::numeric_limits<double>::min(), 1, false, "cone ridge tolerance", "(0, 1]");
   const bool tree_from_solver =
       guided || choose_parameter(get_parameter(np, internal_np::tree_from_solver_t()), false);
   if(initial_rings < 0 || maximum_rings < initial_rings || extension_step < 1)
@@ -603,6 +624,9 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
     throw Algorithm_error("the ridge has " + std::to_string(st.ridge.components) + " components and " +
                           std::to_string(st.ridge.cycles) + " cycles; expected 1 and 2g = " +
                           std::to_string(2 * rcl.statistics.genus));
+  if(field_kind == Field::cone)
+    result.cone_polylines = trace_cone_ridge(tm, vpm, fim, result.polylines, result.cones,
+                                             cone_ridge_tolerance * mean_edge, mean_edge, st.cone_ridge);
   st.time_total = seconds_since(t_start);
   return result;
 }

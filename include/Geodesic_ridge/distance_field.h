@@ -12,6 +12,7 @@
 #define GEODESIC_RIDGE_DISTANCE_FIELD_H
 
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/cone_ridge.h>
 #include <Geodesic_ridge/exceptions.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -73,14 +74,7 @@ public:
       if(cones[f].empty()) throw Invalid_parameter_error("a face has no cone");
       cones_.insert(cones_.end(), cones[f].begin(), cones[f].end());
       first_cone_.push_back(cones_.size());
-      std::array<double, 9> c;
-      for(int k = 0; k < 3; ++k)
-      {
-        c[3 * k] = CGAL::to_double(corners[f][k].x());
-        c[3 * k + 1] = CGAL::to_double(corners[f][k].y());
-        c[3 * k + 2] = CGAL::to_double(corners[f][k].z());
-      }
-      corners_.push_back(c);
+      planes_.emplace_back(corners[f]);
     }
   }
 
@@ -187,41 +181,17 @@ private:
     }
     return best;
   }
-  // per copy, the cone of the sample point nearest to b (the cones of a copy
-  // come in groups, one per `Exact_solver::cone_samples()` point)
   std::pair<std::size_t, double> lowest_cone(std::size_t f, const std::array<double, 3>& b) const
   {
-    const std::array<double, 9>& p = corners_[f];
-    const auto& samples = Exact_solver::cone_samples();
-    const std::size_t S = samples.size();
-    std::size_t nearest = 0;
-    double nearest_d2 = std::numeric_limits<double>::infinity();
-    for(std::size_t i = 0; i < S; ++i)
-    {
-      const double d0 = b[0] - samples[i][0], d1 = b[1] - samples[i][1], d2 = b[2] - samples[i][2];
-      const double x = d0 * p[0] + d1 * p[3] + d2 * p[6], y = d0 * p[1] + d1 * p[4] + d2 * p[7],
-                   z = d0 * p[2] + d1 * p[5] + d2 * p[8];
-      const double dd = x * x + y * y + z * z;
-      if(dd < nearest_d2) { nearest_d2 = dd; nearest = i; }
-    }
-    std::pair<std::size_t, double> best(0, std::numeric_limits<double>::infinity());
-    for(std::size_t c = first_cone_[f] + nearest; c < first_cone_[f + 1]; c += S)
-    {
-      const Face_cone& cone = cones_[c];
-      const double w0 = b[0] - cone.apex[0], w1 = b[1] - cone.apex[1], w2 = b[2] - cone.apex[2];
-      const double x = w0 * p[0] + w1 * p[3] + w2 * p[6], y = w0 * p[1] + w1 * p[4] + w2 * p[7],
-                   z = w0 * p[2] + w1 * p[5] + w2 * p[8];
-      const double value = std::sqrt(x * x + y * y + z * z) + cone.offset;
-      if(value < best.second) best = {(c - first_cone_[f]) / S, value};
-    }
-    return best;
+    const internal::Face_cone_field cones(planes_[f], cones_.data() + first_cone_[f], first_cone_[f + 1] - first_cone_[f]);
+    return cones.lowest(planes_[f].point(b));
   }
 
   std::vector<std::size_t> first_cell_;        // per face index, into fields_
   std::vector<std::array<double, 3> > fields_;  // per cell: corner distances
   std::vector<std::size_t> first_cone_;        // per face index, into cones_ (cone field only)
   std::vector<Face_cone> cones_;
-  std::vector<std::array<double, 9> > corners_; // per face index: its corner points (cone field only)
+  std::vector<internal::Face_plane> planes_;    // per face index: the face in its plane (cone field only)
   std::vector<double> vertex_distances_;
   VertexIndexMap vim_;
   FaceIndexMap fim_;

@@ -3,7 +3,7 @@
 # are the vertex distances, so the order of the barycentric coordinates is
 # checked too: vertex 0 is the source and the second corner of face 0), the
 # refined mesh is a PLY with the two properties, iso-lines and ridge locations
-# are written.
+# are written, and the stats say which ridge was written.
 #   cmake -DCLI=prog -DMESH=torus_1k.off -DDATA=test/cli/data -DOUT=dir [-DEXTRA=...] -P expect_field_outputs.cmake
 file(MAKE_DIRECTORY ${OUT})
 get_filename_component(name ${MESH} NAME_WE)
@@ -12,6 +12,7 @@ execute_process(COMMAND ${CLI} ${MESH} --source-vertex 0 ${EXTRA}
                         --query ${DATA}/queries_torus_1k_barycentric.txt --query-barycentric
                         --query-out ${prefix}_barycentric.txt --refined ${prefix}.ply
                         --isolines 8 ${prefix}_isolines.txt --ridge-locations ${prefix}_ridge.txt
+                        --stats ${prefix}_stats.json
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "exit ${rc}\n${out}\n${err}")
@@ -61,4 +62,12 @@ foreach(f ${prefix}_isolines.txt ${prefix}_isolines_vertices.txt ${prefix}_ridge
     message(FATAL_ERROR "${f}: only ${n} lines")
   endif()
 endforeach()
+# with the cone field, the ridge written is the cones' (its counts in the stats)
+file(READ ${prefix}_stats.json stats)
+string(FIND "${stats}" "\"cone_ridge\"" at)
+if("${EXTRA}" MATCHES "cone" AND at EQUAL -1)
+  message(FATAL_ERROR "the stats of a cone-field run lack 'cone_ridge'")
+elseif(NOT "${EXTRA}" MATCHES "cone" AND NOT at EQUAL -1)
+  message(FATAL_ERROR "the stats of a linear-field run have 'cone_ridge'")
+endif()
 message(STATUS "queries: ${by_barycentric}")

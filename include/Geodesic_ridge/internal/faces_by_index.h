@@ -3,6 +3,7 @@
 #define GEODESIC_RIDGE_INTERNAL_FACES_BY_INDEX_H
 
 #include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <array>
 #include <vector>

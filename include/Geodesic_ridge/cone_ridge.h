@@ -1,0 +1,561 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+//
+// The cone field of a face, and the ridge of the cone field (beyond the paper,
+// exact solver).
+//
+// Per face copy the exact solver gives S cones (one per
+// `Exact_solver::cone_samples()` point): a point of the face takes, per copy,
+// the cone of the nearest sample point, the distance in the face's plane to
+// the cone's apex plus its offset; the field is the lowest over the copies.
+//
+// The cone ridge is where the cones of two fronts agree: a straight bisector
+// when their offsets are equal, a branch of a hyperbola otherwise. The ridge of
+// the linear field has the topology of the cut locus and lies near it (the
+// planes miss the cones at second order), so the cone ridge is traced from it:
+//  1. every point of a polyline moves onto the curve where the lowest cones on
+//     its two sides agree: along its mesh edge, or inside its face across the
+//     polyline (bisection on the difference of the two cones, which changes
+//     sign between the two sides);
+//  2. every junction inside a face where three fronts meet moves to the point
+//     where their three cones agree (Newton's method in the face's plane);
+//  3. every piece between two points of one face is split at the curve until
+//     the curve is within the tolerance of its chord's midpoint.
+// Points at mesh vertices, free ends, junctions on edges and points where the
+// two sides do not give two different lowest copies inside the face stay where
+// the linear ridge put them (counted in the statistics).
+#ifndef GEODESIC_RIDGE_CONE_RIDGE_H
+#define GEODESIC_RIDGE_CONE_RIDGE_H
+
+#include <Geodesic_ridge/internal/faces_by_index.h>
+#include <Geodesic_ridge/lower_envelope.h>
+#include <Geodesic_ridge/ridge_curve.h>
+#include <Geodesic_ridge/solvers/Exact_solver.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace Geodesic_ridge {
+
+/// \ingroup PkgGeodesicRidgeRef
+/// Counts of the cone ridge (`Ridge_curve::cone_polylines`).
+struct Cone_ridge_statistics
+{
+  double tolerance = 0;            ///< absolute: every chord's midpoint is within this of the curve
+  std::size_t points_moved = 0;    ///< points of the linear ridge moved onto the cones' curve
+  std::size_t junctions_moved = 0; ///< polyline ends (junctions) moved to where their cones agree
+  std::size_t points_kept = 0;     ///< at vertices, free ends, or without two fronts in the face
+  std::size_t points_added = 0;    ///< inserted so that the chords follow the curve
+  double largest_move = 0;         ///< the largest distance a point moved, in mean edge lengths
+  double time = 0;
+};
+
+namespace internal {
+
+/// A face in its own plane: corner 0 at the origin, corner 1 on the x axis at
+/// (l, 0), corner 2 at (x2, y2) with y2 > 0. Maps barycentric coordinates (in
+/// the order of a `Face_location`) to plane coordinates and back.
+struct Face_plane
+{
+  double l = 1, x2 = 0, y2 = 1;
+
+  Face_plane() = default;
+  template <class Point_3>
+  explicit Face_plane(const std::array<Point_3, 3>& p)
+  {
+    typedef CGAL::Epick::Vector_3 Vector;
+    const Vector e1(CGAL::to_double(p[1].x() - p[0].x()), CGAL::to_double(p[1].y() - p[0].y()),
+                    CGAL::to_double(p[1].z() - p[0].z()));
+    const Vector e2(CGAL::to_double(p[2].x() - p[0].x()), CGAL::to_double(p[2].y() - p[0].y()),
+                    CGAL::to_double(p[2].z() - p[0].z()));
+    l = std::sqrt(e1.squared_length());
+    x2 = e1 * e2 / l;
+    y2 = std::sqrt(CGAL::cross_product(e1, e2).squared_length()) / l;
+  }
+
+  std::array<double, 2> point(const std::array<double, 3>& b) const { return {{b[1] * l + b[2] * x2, b[2] * y2}}; }
+
+  std::array<double, 3> barycentric(const std::array<double, 2>& x) const
+  {
+    const double b2 = x[1] / y2, b1 = (x[0] - b2 * x2) / l;
+    return {{1 - b1 - b2, b1, b2}};
+  }
+};
+
+/// The cone field of one face: `count` cones, S per copy (copy-major), S the
+/// number of `Exact_solver::cone_samples()`.
+class Face_cone_field
+{
+public:
+  Face_cone_field(const Face_plane& plane, const Face_cone* cones, std::size_t count)
+      : plane_(plane), cones_(cones), count_(count)
+  {}
+
+  std::size_t number_of_copies() const { return count_ / samples().size(); }
+
+  /// The distance by copy `c` at plane point `x`.
+  double value(std::size_t c, const std::array<double, 2>& x) const
+  {
+    return cone_value(cones_[c * samples().size() + nearest_sample(x)], x);
+  }
+
+  /// The copy lowest at `x` (the first of equals) and its distance.
+  std::pair<std::size_t, double> lowest(const std::array<double, 2>& x) const
+  {
+    const std::size_t S = samples().size();
+    std::pair<std::size_t, double> best(0, std::numeric_limits<double>::infinity());
+    for(std::size_t c = nearest_sample(x); c < count_; c += S)
+    {
+      const double v = cone_value(cones_[c], x);
+      if(v < best.second) best = {c / S, v};
+    }
+    return best;
+  }
+
+  /// The apex (in the plane) of the cone that copy `c` uses at `x`.
+  std::array<double, 2> apex(std::size_t c, const std::array<double, 2>& x) const
+  {
+    return plane_.point(cones_[c * samples().size() + nearest_sample(x)].apex);
+  }
+
+  const Face_plane& plane() const { return plane_; }
+
+private:
+  static const std::vector<std::array<double, 3> >& samples() { return Exact_solver::cone_samples(); }
+
+  std::size_t nearest_sample(const std::array<double, 2>& x) const
+  {
+    std::size_t nearest = 0;
+    double nearest_d2 = std::numeric_limits<double>::infinity();
+    for(std::size_t i = 0; i < samples().size(); ++i)
+    {
+      const std::array<double, 2> s = plane_.point(samples()[i]);
+      const double d2 = (x[0] - s[0]) * (x[0] - s[0]) + (x[1] - s[1]) * (x[1] - s[1]);
+      if(d2 < nearest_d2) { nearest_d2 = d2; nearest = i; }
+    }
+    return nearest;
+  }
+
+  double cone_value(const Face_cone& cone, const std::array<double, 2>& x) const
+  {
+    const std::array<double, 2> a = plane_.point(cone.apex);
+    return std::hypot(x[0] - a[0], x[1] - a[1]) + cone.offset;
+  }
+
+  Face_plane plane_;
+  const Face_cone* cones_;
+  std::size_t count_;
+};
+
+/// Traces the ridge of the cone field from the ridge of the linear field (see
+/// the top of this file). `cones`: `Ridge_curve::cones`; `tolerance` absolute.
+template <class TriangleMesh, class VertexPointMap, class FaceIndexMap, class Point>
+class Cone_ridge_tracer
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef std::array<double, 2> P2;
+  typedef std::array<double, 3> Bary;
+  // the largest barycentric coordinate read as 0 (a few units of rounding)
+  static constexpr double rounded_zero = 1e-13;
+
+public:
+  Cone_ridge_tracer(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim,
+                    const std::vector<std::vector<Face_cone> >& cones, double tolerance, double mean_edge)
+      : tm_(tm), fim_(fim), faces_(tm, vpm, fim), cones_(cones), tolerance_(tolerance), mean_edge_(mean_edge)
+  {}
+
+  std::vector<std::vector<Ridge_point<Point> > > trace(std::vector<std::vector<Ridge_point<Point> > > linear,
+                                                      Cone_ridge_statistics& st)
+  {
+    // the ridge's barycentric coordinates are rounded from exact ones: a point
+    // on an edge may come with a coordinate of the order of the rounding
+    for(auto& pl : linear)
+      for(auto& p : pl)
+        for(double& b : p.barycentric)
+          if(std::abs(b) <= rounded_zero) b = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    st.tolerance = tolerance_;
+    // one point of the ridge, rounded in two faces, comes twice this close
+    const double same_point = 1e-9 * mean_edge_;
+    // a point is moved once: junctions end several polylines, and a point on
+    // an edge may come twice in a row (once per face)
+    std::map<std::array<double, 3>, Ridge_point<Point> > moved_at;
+    std::vector<std::vector<Ridge_point<Point> > > result;
+    for(const auto& pl : linear)
+    {
+      std::vector<Ridge_point<Point> > moved(pl.size());
+      for(std::size_t i = 0; i < pl.size(); ++i)
+      {
+        const std::array<double, 3> key = {{CGAL::to_double(pl[i].point.x()), CGAL::to_double(pl[i].point.y()),
+                                            CGAL::to_double(pl[i].point.z())}};
+        const auto near = moved_at.lower_bound({{key[0] - same_point, -HUGE_VAL, -HUGE_VAL}});
+        auto it = near;
+        while(it != moved_at.end() && it->first[0] <= key[0] + same_point &&
+              !(std::abs(it->first[1] - key[1]) <= same_point && std::abs(it->first[2] - key[2]) <= same_point))
+          ++it;
+        if(it != moved_at.end() && it->first[0] <= key[0] + same_point) { moved[i] = it->second; continue; }
+        // the nearest other points before and after it
+        auto same = [&](std::size_t j) { return CGAL::squared_distance(pl[j].point, pl[i].point) <= same_point * same_point; };
+        std::size_t before = i, after = i;
+        while(before > 0 && same(before)) --before;
+        while(after + 1 < pl.size() && same(after)) ++after;
+        const bool has_before = !same(before), has_after = !same(after);
+        const bool end = i == 0 || i + 1 == pl.size();
+        if(!has_before && !has_after) moved[i] = pl[i];
+        else if(end || !has_before || !has_after)
+          moved[i] = move_end(pl[i], pl[has_before ? before : after].point, st);
+        else
+          moved[i] = move_interior(pl[i], pl[before].point, pl[after].point, st);
+        moved_at.emplace(key, moved[i]);
+      }
+      result.emplace_back();
+      std::vector<Ridge_point<Point> >& out = result.back();
+      for(std::size_t i = 0; i < moved.size(); ++i)
+      {
+        if(i > 0) refine(pl[i - 1], pl[i], moved[i - 1], moved[i], out, st);
+        out.push_back(moved[i]);
+      }
+    }
+    st.time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return result;
+  }
+
+private:
+  Face_plane plane_of(std::size_t f) const { return Face_plane(faces_.corner_points(f)); }
+
+  Face_cone_field field_of(std::size_t f) const
+  {
+    return Face_cone_field(plane_of(f), cones_[f].data(), cones_[f].size());
+  }
+
+  // the plane point, in face f, of a 3D vector given in 3D (projected)
+  P2 direction_in_face(std::size_t f, const Point& from, const Point& to) const
+  {
+    typedef CGAL::Epick::Vector_3 Vector;
+    const auto p = faces_.corner_points(f);
+    auto vec = [](const Point& a, const Point& b) {
+      return Vector(CGAL::to_double(b.x() - a.x()), CGAL::to_double(b.y() - a.y()), CGAL::to_double(b.z() - a.z()));
+    };
+    const Vector e1 = vec(p[0], p[1]), e2 = vec(p[0], p[2]), t = vec(from, to);
+    const Vector ex = e1 / std::sqrt(e1.squared_length());
+    Vector ey = e2 - (e2 * ex) * ex;
+    ey = ey / std::sqrt(ey.squared_length());
+    return {{t * ex, t * ey}};
+  }
+
+  Ridge_point<Point> make_point(const Ridge_point<Point>& like, std::size_t f, const Bary& b) const
+  {
+    Ridge_point<Point> p = like;
+    p.face = f;
+    p.barycentric = b;
+    const auto c = faces_.corner_points(f);
+    p.point = barycentric_to_point(b, c[0], c[1], c[2]);
+    return p;
+  }
+
+  void count_move(const Ridge_point<Point>& from, const Ridge_point<Point>& to, Cone_ridge_statistics& st) const
+  {
+    st.largest_move = (std::max)(st.largest_move, std::sqrt(CGAL::to_double(CGAL::squared_distance(from.point, to.point))) / mean_edge_);
+  }
+
+  // the number of zero barycentric coordinates (1: on an edge, 2: at a vertex)
+  static int zeros(const Bary& b) { return int(b[0] == 0) + int(b[1] == 0) + int(b[2] == 0); }
+
+  // Root of value(a) - value(b) on x(s) = x0 + s d, s in [lo, hi], where a is
+  // lowest at lo and b at hi; false if the sides do not give two copies or a
+  // third copy is lower at the root.
+  bool bisect(const Face_cone_field& field, const P2& x0, const P2& d, double lo, double hi, P2& root) const
+  {
+    auto at = [&](double s) { return P2{{x0[0] + s * d[0], x0[1] + s * d[1]}}; };
+    const std::size_t a = field.lowest(at(lo)).first, b = field.lowest(at(hi)).first;
+    if(a == b) return false;
+    auto g = [&](double s) { return field.value(a, at(s)) - field.value(b, at(s)); };
+    if(!(g(lo) < 0 && g(hi) > 0)) return false;
+    for(int it = 0; it < 200 && hi - lo > 1e-15 * (std::abs(lo) + std::abs(hi) + mean_edge_); ++it)
+    {
+      const double mid = 0.5 * (lo + hi);
+      (g(mid) < 0 ? lo : hi) = mid;
+    }
+    root = at(0.5 * (lo + hi));
+    const auto best = field.lowest(root);
+    const double va = field.value(a, root);
+    return best.first == a || best.first == b || best.second >= va - 1e-12 * (va + mean_edge_);
+  }
+
+  // the largest s >= 0 with b + s w inside the face (times `margin`)
+  static double room(const Bary& b, const Bary& w, double margin)
+  {
+    double s = std::numeric_limits<double>::infinity();
+    for(int k = 0; k < 3; ++k)
+      if(w[k] < 0) s = (std::min)(s, -b[k] / w[k]);
+    return margin * s;
+  }
+
+  Ridge_point<Point> move_interior(const Ridge_point<Point>& p, const Point& prev, const Point& next,
+                                   Cone_ridge_statistics& st) const
+  {
+    const int z = zeros(p.barycentric);
+    if(z >= 2) { ++st.points_kept; return p; }
+    const Face_cone_field field = field_of(p.face);
+    const Face_plane& plane = field.plane();
+    const P2 x0 = plane.point(p.barycentric);
+    const double reach = 0.5 * (std::min)(std::sqrt(CGAL::to_double(CGAL::squared_distance(p.point, prev))),
+                                          std::sqrt(CGAL::to_double(CGAL::squared_distance(p.point, next))));
+    P2 d;
+    if(z == 1)
+    {
+      // along the edge the point lies on
+      int k = 0;
+      while(p.barycentric[k] != 0) ++k;
+      Bary e = {{0, 0, 0}};
+      e[(k + 1) % 3] = 1;
+      const P2 from = plane.point(e);
+      e = {{0, 0, 0}};
+      e[(k + 2) % 3] = 1;
+      const P2 to = plane.point(e);
+      d = {{to[0] - from[0], to[1] - from[1]}};
+    }
+    else
+    {
+      const P2 t = direction_in_face(p.face, prev, next);
+      d = {{-t[1], t[0]}};
+    }
+    const double n = std::hypot(d[0], d[1]);
+    if(!(n > 0)) { ++st.points_kept; return p; }
+    d = {{d[0] / n, d[1] / n}};
+    Bary w = barycentric_direction(plane, d);
+    for(int k = 0; k < 3; ++k)
+      if(p.barycentric[k] == 0) w[k] = 0; // along its edge
+    const Bary minus_w = {{-w[0], -w[1], -w[2]}};
+    const double hi = (std::min)(reach, room(p.barycentric, w, 0.999)),
+                 lo = -(std::min)(reach, room(p.barycentric, minus_w, 0.999));
+    P2 root;
+    bool found = hi > 0 && lo < 0 && bisect(field, x0, d, lo, hi, root);
+    if(!found)
+    {
+      // the cones' curve lies farther than the linear ridge's neighbours: look
+      // up to half an edge away
+      const double far = 0.5 * mean_edge_;
+      found = bisect(field, x0, d, -(std::min)(far, room(p.barycentric, minus_w, 0.999)),
+                     (std::min)(far, room(p.barycentric, w, 0.999)), root);
+    }
+    if(!found) { ++st.points_kept; return p; }
+    Bary b = plane.barycentric(root);
+    if(z == 1)
+    {
+      // exactly on the edge
+      int k = 0;
+      while(p.barycentric[k] != 0) ++k;
+      const double t = b[(k + 2) % 3] / (b[(k + 1) % 3] + b[(k + 2) % 3]);
+      b[k] = 0;
+      b[(k + 1) % 3] = 1 - t;
+      b[(k + 2) % 3] = t;
+    }
+    const Ridge_point<Point> q = make_point(p, p.face, b);
+    count_move(p, q, st);
+    ++st.points_moved;
+    return q;
+  }
+
+  static Bary barycentric_direction(const Face_plane& plane, const P2& d)
+  {
+    const Bary o = plane.barycentric({{0, 0}}), e = plane.barycentric(d);
+    return {{e[0] - o[0], e[1] - o[1], e[2] - o[2]}};
+  }
+
+  // A junction inside a face where exactly three copies are lowest around it
+  // moves to where their three cones agree; every other end stays.
+  Ridge_point<Point> move_end(const Ridge_point<Point>& p, const Point& neighbour, Cone_ridge_statistics& st) const
+  {
+    // on an edge: where the lowest copy of the face changes along the edge
+    // (there the ridge that runs into the face meets the one along the edge)
+    if(zeros(p.barycentric) == 1)
+    {
+      const std::size_t moved = st.points_moved;
+      const Ridge_point<Point> q = move_interior(p, neighbour, neighbour, st);
+      if(st.points_moved > moved) { --st.points_moved; ++st.junctions_moved; }
+      return q;
+    }
+    if(zeros(p.barycentric) != 0) { ++st.points_kept; return p; }
+    const Face_cone_field field = field_of(p.face);
+    const Face_plane& plane = field.plane();
+    P2 x = plane.point(p.barycentric);
+    double r = 0.25 * std::sqrt(CGAL::to_double(CGAL::squared_distance(p.point, neighbour)));
+    for(int k = 0; k < 3; ++k) r = (std::min)(r, 0.5 * distance_to_side(plane, x, k));
+    std::set<std::size_t> around;
+    const int directions = 24;
+    for(int k = 0; k < directions; ++k)
+    {
+      const double phi = 2 * CGAL_PI * k / directions;
+      around.insert(field.lowest({{x[0] + r * std::cos(phi), x[1] + r * std::sin(phi)}}).first);
+    }
+    if(around.size() != 3) { ++st.points_kept; return p; }
+    const std::vector<std::size_t> c(around.begin(), around.end());
+    // Newton on (v_a - v_b, v_a - v_c) = 0; the gradient of a cone is the unit
+    // vector from its apex
+    const P2 start = x;
+    bool converged = false;
+    for(int it = 0; it < 50 && !converged; ++it)
+    {
+      std::array<P2, 3> u;
+      std::array<double, 3> v;
+      for(int j = 0; j < 3; ++j)
+      {
+        const P2 a = field.apex(c[j], x);
+        const double len = std::hypot(x[0] - a[0], x[1] - a[1]);
+        if(!(len > 0)) { ++st.points_kept; return p; }
+        u[j] = {{(x[0] - a[0]) / len, (x[1] - a[1]) / len}};
+        v[j] = field.value(c[j], x);
+      }
+      const double f0 = v[0] - v[1], f1 = v[0] - v[2];
+      const double j00 = u[0][0] - u[1][0], j01 = u[0][1] - u[1][1], j10 = u[0][0] - u[2][0], j11 = u[0][1] - u[2][1];
+      const double det = j00 * j11 - j01 * j10;
+      if(!(std::abs(det) > 1e-12)) { ++st.points_kept; return p; }
+      const double dx = (j11 * f0 - j01 * f1) / det, dy = (-j10 * f0 + j00 * f1) / det;
+      x = {{x[0] - dx, x[1] - dy}};
+      converged = std::hypot(dx, dy) <= 1e-14 * (mean_edge_ + std::hypot(x[0], x[1]));
+    }
+    const Bary b = plane.barycentric(x);
+    const bool inside = b[0] > 0 && b[1] > 0 && b[2] > 0;
+    const double moved = std::hypot(x[0] - start[0], x[1] - start[1]);
+    const auto best = field.lowest(x);
+    const double va = field.value(c[0], x);
+    if(!converged || !inside || moved > 2 * r ||
+       !(best.first == c[0] || best.first == c[1] || best.first == c[2] || best.second >= va - 1e-12 * (va + mean_edge_)))
+    {
+      ++st.points_kept;
+      return p;
+    }
+    const Ridge_point<Point> q = make_point(p, p.face, b);
+    count_move(p, q, st);
+    ++st.junctions_moved;
+    return q;
+  }
+
+  // distance from plane point x to the side of the face opposite corner k
+  static double distance_to_side(const Face_plane& plane, const P2& x, int k)
+  {
+    Bary e = {{0, 0, 0}};
+    e[(k + 1) % 3] = 1;
+    const P2 a = plane.point(e);
+    e = {{0, 0, 0}};
+    e[(k + 2) % 3] = 1;
+    const P2 b = plane.point(e);
+    const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
+    return std::abs((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / len;
+  }
+
+  // The faces that hold a point: its face, the face across its edge, or the
+  // faces around its vertex.
+  std::vector<std::size_t> faces_holding(const Ridge_point<Point>& p) const
+  {
+    const auto h = faces_.corner_halfedges(p.face);
+    const int z = zeros(p.barycentric);
+    std::vector<std::size_t> result{p.face};
+    if(z == 1)
+    {
+      int k = 0;
+      while(p.barycentric[k] != 0) ++k;
+      const auto g = face(opposite(h[(k + 1) % 3], tm_), tm_);
+      if(g != GT::null_face()) result.push_back(static_cast<std::size_t>(get(fim_, g)));
+    }
+    else if(z == 2)
+    {
+      int k = 0;
+      while(p.barycentric[k] == 0) ++k;
+      result.clear();
+      for(face_descriptor g : CGAL::faces_around_target(h[(k + 2) % 3], tm_))
+        if(g != GT::null_face()) result.push_back(static_cast<std::size_t>(get(fim_, g)));
+    }
+    return result;
+  }
+
+  // the barycentric coordinates of p in face g, which holds it
+  Bary barycentric_in(const Ridge_point<Point>& p, std::size_t g) const
+  {
+    if(g == p.face) return p.barycentric;
+    const auto hp = faces_.corner_halfedges(p.face), hg = faces_.corner_halfedges(g);
+    Bary b = {{0, 0, 0}};
+    for(int k = 0; k < 3; ++k)
+      if(p.barycentric[k] != 0)
+        for(int j = 0; j < 3; ++j)
+          if(source(hg[j], tm_) == source(hp[k], tm_)) b[j] = p.barycentric[k];
+    return b;
+  }
+
+  // Splits the piece from a to b (moved from la, lb) at the curve until the
+  // curve is within the tolerance of every chord's midpoint; appends the
+  // points strictly between a and b.
+  void refine(const Ridge_point<Point>& la, const Ridge_point<Point>& lb, const Ridge_point<Point>& a,
+              const Ridge_point<Point>& b, std::vector<Ridge_point<Point> >& out, Cone_ridge_statistics& st) const
+  {
+    const std::vector<std::size_t> fa = faces_holding(la), fb = faces_holding(lb);
+    std::vector<std::size_t> common;
+    for(std::size_t f : fa)
+      if(std::find(fb.begin(), fb.end(), f) != fb.end()) common.push_back(f);
+    if(common.size() != 1) return; // along a mesh edge, or not in one face
+    const std::size_t f = common[0];
+    const Face_cone_field field = field_of(f);
+    split(field, f, a, barycentric_in(a, f), barycentric_in(b, f), out, st, 0);
+  }
+
+  void split(const Face_cone_field& field, std::size_t f, const Ridge_point<Point>& like, const Bary& ba,
+             const Bary& bb, std::vector<Ridge_point<Point> >& out, Cone_ridge_statistics& st, int depth) const
+  {
+    const Face_plane& plane = field.plane();
+    const P2 xa = plane.point(ba), xb = plane.point(bb);
+    const double len = std::hypot(xb[0] - xa[0], xb[1] - xa[1]);
+    if(depth >= 12 || !(len > 2 * tolerance_)) return;
+    const P2 m = {{0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1])}};
+    const P2 d = {{-(xb[1] - xa[1]) / len, (xb[0] - xa[0]) / len}};
+    const Bary bm = {{0.5 * (ba[0] + bb[0]), 0.5 * (ba[1] + bb[1]), 0.5 * (ba[2] + bb[2])}};
+    const Bary w = barycentric_direction(plane, d);
+    const Bary minus_w = {{-w[0], -w[1], -w[2]}};
+    const double hi = (std::min)(0.5 * len, room(bm, w, 0.999)), lo = -(std::min)(0.5 * len, room(bm, minus_w, 0.999));
+    P2 root;
+    if(!(hi > 0 && lo < 0)) return;
+    if(!bisect(field, m, d, lo, hi, root)) return;
+    if(std::hypot(root[0] - m[0], root[1] - m[1]) <= tolerance_) return;
+    const Bary br = plane.barycentric(root);
+    split(field, f, like, ba, br, out, st, depth + 1);
+    Ridge_point<Point> r = make_point(like, f, br);
+    out.push_back(r);
+    ++st.points_added;
+    split(field, f, like, br, bb, out, st, depth + 1);
+  }
+
+  const TriangleMesh& tm_;
+  FaceIndexMap fim_;
+  Faces_by_index<TriangleMesh, VertexPointMap> faces_;
+  const std::vector<std::vector<Face_cone> >& cones_;
+  double tolerance_, mean_edge_;
+};
+
+/// The cone ridge traced from the linear ridge `linear`.
+template <class TriangleMesh, class VertexPointMap, class FaceIndexMap, class Point>
+std::vector<std::vector<Ridge_point<Point> > >
+trace_cone_ridge(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim,
+                 const std::vector<std::vector<Ridge_point<Point> > >& linear,
+                 const std::vector<std::vector<Face_cone> >& cones, double tolerance, double mean_edge,
+                 Cone_ridge_statistics& st)
+{
+  Cone_ridge_tracer<TriangleMesh, VertexPointMap, FaceIndexMap, Point> tracer(tm, vpm, fim, cones, tolerance,
+                                                                              mean_edge);
+  return tracer.trace(linear, st);
+}
+
+} // namespace internal
+} // namespace Geodesic_ridge
+
+#endif // GEODESIC_RIDGE_CONE_RIDGE_H
