@@ -84,6 +84,12 @@ struct Face_plane
 
   std::array<double, 2> point(const std::array<double, 3>& b) const { return {{b[1] * l + b[2] * x2, b[2] * y2}}; }
 
+  /// corner k (0, 1, 2)
+  std::array<double, 2> corner(int k) const
+  {
+    return k == 0 ? std::array<double, 2>{{0, 0}} : k == 1 ? std::array<double, 2>{{l, 0}} : std::array<double, 2>{{x2, y2}};
+  }
+
   std::array<double, 3> barycentric(const std::array<double, 2>& x) const
   {
     const double b2 = x[1] / y2, b1 = (x[0] - b2 * x2) / l;
@@ -318,12 +324,7 @@ private:
       // along the edge the point lies on
       int k = 0;
       while(p.barycentric[k] != 0) ++k;
-      Bary e = {{0, 0, 0}};
-      e[(k + 1) % 3] = 1;
-      const P2 from = plane.point(e);
-      e = {{0, 0, 0}};
-      e[(k + 2) % 3] = 1;
-      const P2 to = plane.point(e);
+      const P2 from = plane.corner((k + 1) % 3), to = plane.corner((k + 2) % 3);
       d = {{to[0] - from[0], to[1] - from[1]}};
     }
     else
@@ -391,15 +392,18 @@ private:
     const Face_cone_field field = field_of(p.face);
     const Face_plane& plane = field.plane();
     P2 x = plane.point(p.barycentric);
-    double r = 0.25 * std::sqrt(CGAL::to_double(CGAL::squared_distance(p.point, neighbour)));
-    for(int k = 0; k < 3; ++k) r = (std::min)(r, 0.5 * distance_to_side(plane, x, k));
+    // the copies lowest on circles around it, from a quarter of the way to
+    // its neighbour down to 1/256 of that (the cones' junction may lie just
+    // beside the linear one)
+    const double r = 0.25 * std::sqrt(CGAL::to_double(CGAL::squared_distance(p.point, neighbour)));
     std::set<std::size_t> around;
     const int directions = 24;
-    for(int k = 0; k < directions; ++k)
-    {
-      const double phi = 2 * CGAL_PI * k / directions;
-      around.insert(field.lowest({{x[0] + r * std::cos(phi), x[1] + r * std::sin(phi)}}).first);
-    }
+    for(double radius = r; radius >= r / 256; radius /= 4)
+      for(int k = 0; k < directions; ++k)
+      {
+        const double phi = 2 * CGAL_PI * k / directions;
+        around.insert(field.lowest({{x[0] + radius * std::cos(phi), x[1] + radius * std::sin(phi)}}).first);
+      }
     if(around.size() != 3) { ++st.points_kept; return p; }
     const std::vector<std::size_t> c(around.begin(), around.end());
     // Newton on (v_a - v_b, v_a - v_c) = 0; the gradient of a cone is the unit
@@ -441,19 +445,6 @@ private:
     count_move(p, q, st);
     ++st.junctions_moved;
     return q;
-  }
-
-  // distance from plane point x to the side of the face opposite corner k
-  static double distance_to_side(const Face_plane& plane, const P2& x, int k)
-  {
-    Bary e = {{0, 0, 0}};
-    e[(k + 1) % 3] = 1;
-    const P2 a = plane.point(e);
-    e = {{0, 0, 0}};
-    e[(k + 2) % 3] = 1;
-    const P2 b = plane.point(e);
-    const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
-    return std::abs((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / len;
   }
 
   // The faces that hold a point: its face, the face across its edge, or the
