@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Question: how exact is the region-wise distance field at surface points,
 // against linear interpolation of exact vertex distances? The paper's Table 1

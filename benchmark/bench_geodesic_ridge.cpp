@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Question: what does the whole pipeline cost, stage by stage, next to one
 // exact geodesic solve (CGAL Surface_mesh_shortest_path) on the original mesh?

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Question: what does the exact lower envelope of one face cost, per number
 // type, for m = 2, 4, 8 copies with solver-like distances?

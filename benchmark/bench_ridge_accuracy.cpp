@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Question: how close is the computed ridge to the exact one, over many
 // sources, with each solver (DESIGN.md §6)? And, with --diagnose: does the

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The meshes a benchmark runs on when none is given: every .off file of
 // ../shared/data, or of the repository's data/ when ../shared is absent,

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // geodesic_ridge: the package's command-line program (DESIGN.md §8).
 //

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The geodesic ridge of a vertex, with the one-shot function and with the
 // result class, and its region-wise distance field (queries, linear and cone;

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The smallest use of stage 1: read a mesh, compute the rough cut locus of a
 // vertex, print what it found and write the cut graph K as polylines.

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Convenience header: includes every public header of the package.
 #ifndef GEODESIC_RIDGE_H

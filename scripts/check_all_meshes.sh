@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs the CLI on every mesh of ../shared/data (up to MAX_FACES faces, default
 # 20000) from three sources at tolerances 0.005 to 0.2, and reports every run
 # that fails. Needs a built build/examples/geodesic_ridge (scripts/demo.sh).

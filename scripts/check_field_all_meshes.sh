@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs every output of the region-wise field (refined mesh, iso-lines, ridge
 # locations, queries, picture) on every mesh of ../shared/data, with fast
 # marching on all of them and with the exact solver (and the cone field) on

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the geodesic_ridge program and runs it on the bundled default mesh.
 # Outputs go to out/ (see the last lines this prints).
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the Debian packages Geodesic_ridge needs, when run as root; otherwise
 # prints the one apt-get line to run. Exit status 0 iff everything is there.
 set -euo pipefail

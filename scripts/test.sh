@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds and runs the whole test suite (Catch2 unit tests + command-line tests).
 #   bash scripts/test.sh              optimised build in build/
 #   bash scripts/test.sh --sanitize   AddressSanitizer + UBSan build in build-asan/

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Command-line tests of geodesic_ridge: bad input must give a one-line error
 # and a non-zero exit; good input must write a valid rough cut.
 if(NOT TARGET geodesic_ridge)

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Tests of the region-wise distance field (distance_field.h), the
 // ridge-refined mesh (refined_mesh.h) and iso-lines (isolines.h):

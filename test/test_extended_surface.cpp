@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 2a (extended surface) and the exact solver: the invariants of
 // DESIGN.md §3, checked directly on meshes of genus 0 to 3.

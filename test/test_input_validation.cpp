@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Tests of mesh input: validate_triangle_soup, validate_triangle_mesh and
 // read_triangle_mesh. Every rule of the validation is exercised through OFF,

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 2c (lower envelope of the linear fields of a face's copies): exact
 // answers for known configurations, the degenerate cases the design calls

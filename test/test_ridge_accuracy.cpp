@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The measure of correctness of DESIGN.md §6: the computed ridge against the
 // exact reference ridge built from CGAL Surface_mesh_shortest_path arrival

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The ridge curve (stage 3, and the whole pipeline) against analytic oracles
 // (DESIGN.md §6):

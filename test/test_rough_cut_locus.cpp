@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 1 (rough cut locus): significance against brute force and the paper's
 // Algorithm 1, and the disk property over tolerance sweeps on meshes of genus

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The geodesic solvers (models of GeodesicSolver) against known distances:
 //  * the top sheet of a doubly covered square, where geodesics between top

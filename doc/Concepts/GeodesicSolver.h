@@ -1,3 +1,5 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 /*!
 \ingroup PkgGeodesicRidgeConcepts
 \cgalConcept

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The whole pipeline: rough cut locus -> extended surface -> geodesic solve ->
 // exact lower envelope per face -> ridge curve. A free function for one-shot

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The cone field of a face, and the ridge of the cone field (beyond the paper,
 // exact solver).

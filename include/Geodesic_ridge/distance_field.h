@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The region-wise distance field (DESIGN.md §5): on every face of M, the
 // lower envelope of the fields of the copies that survive there. Linear (the

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Typed exceptions thrown by every stage of the package.
 #ifndef GEODESIC_RIDGE_EXCEPTIONS_H

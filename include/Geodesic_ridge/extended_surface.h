@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 2a: the extended surface E (DESIGN.md §3, paper §3.2.1).
 //

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Iso-lines of a field that is linear on every face of a triangle mesh, by
 // marching triangles. On the ridge-refined mesh (refined_mesh.h) this is the

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 2c: the lower envelope of the linear distance fields of the copies of
 // one face (DESIGN.md §3 "Lower envelope").

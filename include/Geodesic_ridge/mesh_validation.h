@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Checks that an input mesh is one the algorithm supports, before any work is
 // done, so that a bad mesh ends with a one-line message instead of a crash, a

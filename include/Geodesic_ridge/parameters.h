@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Named parameters of the package. CGAL's list of named parameters is closed
 // to outside packages, so our own knobs are tag types of our own; CGAL's

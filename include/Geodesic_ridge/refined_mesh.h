@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The ridge-refined mesh (DESIGN.md §5): M with every face that holds more
 // than one cell of the envelope split along every cell boundary, so that each

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The geodesic source: a mesh vertex or a surface point (`Face_location`),
 // validated and turned into what the stages need (Dijkstra seeds, the faces

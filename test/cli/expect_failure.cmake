@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs a command that must fail with a non-zero exit and exactly one line on
 # stderr that matches EXPECT (a regular expression).
 #   cmake -DEXPECT=regex -DCOMMAND="prog;arg;..." -P expect_failure.cmake

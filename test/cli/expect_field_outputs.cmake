@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs geodesic_ridge with every output of the region-wise field and checks
 # them: queries in both forms give the same distances (the corners' distances
 # are the vertex distances, so the order of the barycentric coordinates is

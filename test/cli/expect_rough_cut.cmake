@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs the CLI on one mesh and checks that it wrote a non-empty rough cut and a
 # non-empty ridge in CGAL's polylines format, and a JSON stats file with the
 # expected cycle rank of K and cycles of the ridge (2g).

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Test support: meshes whose geodesic cut locus is known analytically
 // (DESIGN.md §6), and the small geometric helpers the oracle tests need.

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The checks that name the culprit when a ridge is off (issue 10), for tests
 // and for `bench_ridge_accuracy --diagnose`:

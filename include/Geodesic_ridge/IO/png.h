@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A picture of a mesh with curves on it, as a PNG, with no dependency: a small
 // z-buffer rasterizer (orthographic, two opposite views side by side, so that a

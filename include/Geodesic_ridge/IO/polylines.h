@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Polylines in CGAL's text format: one polyline per line, `n x1 y1 z1 ... xn yn zn`.
 #ifndef GEODESIC_RIDGE_IO_POLYLINES_H

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Reads a triangle mesh from an OFF, OBJ or PLY file, keeping the file's
 // vertex and face order, and turns every problem into a typed exception.

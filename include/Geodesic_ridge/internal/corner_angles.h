@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Corner angles of a triangle mesh and the angle sum at every vertex, from
 // which the discrete Gaussian curvature 2π − angle sum follows. Stage 1 shares

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef GEODESIC_RIDGE_INTERNAL_UNION_FIND_H
 #define GEODESIC_RIDGE_INTERNAL_UNION_FIND_H
 

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The exact geodesic solver: CGAL's Surface_mesh_shortest_path (MMP/Chen-Han
 // style window propagation) on whatever mesh it is given.

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Fast marching on a triangle mesh (Kimmel & Sethian 1998): a Dijkstra-like
 // sweep whose update across a triangle assumes a locally planar front, so the
