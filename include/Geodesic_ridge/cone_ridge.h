@@ -206,12 +206,7 @@ public:
       {
         const std::array<double, 3> key = {{CGAL::to_double(pl[i].point.x()), CGAL::to_double(pl[i].point.y()),
                                             CGAL::to_double(pl[i].point.z())}};
-        const auto near = moved_at.lower_bound({{key[0] - same_point, -HUGE_VAL, -HUGE_VAL}});
-        auto it = near;
-        while(it != moved_at.end() && it->first[0] <= key[0] + same_point &&
-              !(std::abs(it->first[1] - key[1]) <= same_point && std::abs(it->first[2] - key[2]) <= same_point))
-          ++it;
-        if(it != moved_at.end() && it->first[0] <= key[0] + same_point) { moved[i] = it->second; continue; }
+        if(const Ridge_point<Point>* done = find_near(moved_at, key, same_point)) { moved[i] = *done; continue; }
         // the nearest other points before and after it
         auto same = [&](std::size_t j) { return CGAL::squared_distance(pl[j].point, pl[i].point) <= same_point * same_point; };
         std::size_t before = i, after = i;
@@ -239,6 +234,16 @@ public:
   }
 
 private:
+  // the entry of `points` within `distance` of `key` in every coordinate, if any
+  static const Ridge_point<Point>* find_near(const std::map<std::array<double, 3>, Ridge_point<Point> >& points,
+                                             const std::array<double, 3>& key, double distance)
+  {
+    for(auto it = points.lower_bound({{key[0] - distance, -HUGE_VAL, -HUGE_VAL}});
+        it != points.end() && it->first[0] <= key[0] + distance; ++it)
+      if(std::abs(it->first[1] - key[1]) <= distance && std::abs(it->first[2] - key[2]) <= distance) return &it->second;
+    return nullptr;
+  }
+
   Face_plane plane_of(std::size_t f) const { return Face_plane(faces_.corner_points(f)); }
 
   Face_cone_field field_of(std::size_t f) const

@@ -219,12 +219,9 @@ auto make_distance_field(const TriangleMesh& tm, const Ridge_curve<TriangleMesh,
     throw Invalid_parameter_error("the ridge curve has no cones: compute it with parameters::field(Field::cone)");
   const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                       get_const_property_map(CGAL::vertex_point, tm));
-  std::vector<std::array<Point, 3> > corners(num_faces(tm));
-  for(auto f : faces(tm))
-  {
-    const auto h = halfedge(f, tm);
-    corners[get(fim, f)] = {{get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm))}};
-  }
+  const internal::Faces_by_index<TriangleMesh, std::decay_t<decltype(vpm)> > faces_by_index(tm, vpm, fim);
+  std::vector<std::array<Point, 3> > corners;
+  for(std::size_t f = 0; f < num_faces(tm); ++f) corners.push_back(faces_by_index.corner_points(f));
   return Field_type(ridge.regions, ridge.cones, corners, ridge.vertex_distances, vim, fim);
 }
 
