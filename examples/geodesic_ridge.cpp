@@ -430,6 +430,7 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
      << "    \"total_length\": " << json_number(q.total_length) << ",\n"
      << "    \"faces_with_several_copies\": " << q.faces_with_several_copies << ",\n"
      << "    \"surviving_copies\": " << q.surviving_copies << ",\n"
+     << "    \"split_copies\": " << q.split_copies << ",\n"
      << "    \"envelope_segments\": " << q.envelope_segments << ",\n"
      << "    \"edge_segments\": " << q.edge_segments << ",\n"
      << "    \"regions_before_merge\": " << q.regions_before_merge << ",\n"

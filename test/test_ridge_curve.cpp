@@ -25,6 +25,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -616,4 +617,105 @@ TEST_CASE("guided extension and leaf extension keep the ridge's guarantees", "[r
   for(double bad : {-0.1, 1.5, std::nan("")})
     REQUIRE_THROWS_AS(Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0), p::leaf_extension(bad)),
                       Geodesic_ridge::Invalid_parameter_error);
+}
+
+// A copy whose corners are reached by different fronts inside one sheet (a
+// branch the cut graph lacks) is split into one copy per front by the cones of
+// its samples (Kink_splitter); the split copies keep the copy's distances at
+// the corners. The kinks' effect on real meshes (recall) is measured by the
+// accuracy tests (test_ridge_accuracy.cpp).
+TEST_CASE("a copy is split at a kink between its corners' fronts", "[ridge_curve]")
+{
+  Mesh m;
+  const auto v0 = m.add_vertex(Point_3(0, 0, 0)), v1 = m.add_vertex(Point_3(1, 0, 0)), v2 = m.add_vertex(Point_3(0, 1, 0));
+  m.add_face(v0, v1, v2);
+  std::array<Point_3, 3> corner;
+  {
+    auto h = m.halfedge(*m.faces().begin());
+    for(int k = 0; k < 3; ++k, h = m.next(h)) corner[k] = m.point(m.source(h));
+  }
+  // barycentric coordinates of a point of the plane z = 0 (signed areas)
+  auto barycentric = [&](double x, double y) {
+    typedef K::Point_2 P2;
+    auto flat = [](const Point_3& p) { return P2(p.x(), p.y()); };
+    const P2 q(x, y), a = flat(corner[0]), b = flat(corner[1]), c = flat(corner[2]);
+    const double whole = CGAL::area(a, b, c);
+    return std::array<double, 3>{{CGAL::area(q, b, c) / whole, CGAL::area(a, q, c) / whole, CGAL::area(a, b, q) / whole}};
+  };
+  auto distance_to = [&](int k, double x, double y) {
+    return std::sqrt(CGAL::to_double(CGAL::squared_distance(corner[k], Point_3(x, y, 0))));
+  };
+  const auto& samples = Geodesic_ridge::Exact_solver::corner_samples();
+  // fronts from the left (apex (-2, 0)) and from above (apex (0, 3)): they
+  // arrive at the centroid 91 degrees apart; a third front from (-2, 0.3) is
+  // the first one's neighbour (5 degrees)
+  struct Front { double x, y; };
+  auto run = [&](const std::array<Front, 3>& front_of_corner) {
+    std::vector<Geodesic_ridge::internal::Face_copies> copies(1);
+    std::vector<Geodesic_ridge::Face_cone> cones(samples.size());
+    std::array<double, 3> d;
+    for(int k = 0; k < 3; ++k)
+    {
+      d[k] = distance_to(k, front_of_corner[k].x, front_of_corner[k].y);
+      // the sample nearest to corner k is sample k
+      cones[k].apex = barycentric(front_of_corner[k].x, front_of_corner[k].y);
+      cones[k].offset = 0;
+    }
+    copies[0].copies = {0};
+    copies[0].fields = {d};
+    std::size_t split = 0;
+    // E: the triangle itself, one copy
+    Geodesic_ridge::Extended_surface<Point_3> E;
+    E.mesh = m;
+    E.original_face = {0};
+    E.original_vertex = {0, 1, 2};
+    const Geodesic_ridge::internal::Kink_splitter<Mesh, decltype(get(CGAL::vertex_point, m)),
+                                                  decltype(get(CGAL::face_index, m)), Point_3>
+        splitter(m, get(CGAL::vertex_point, m), get(CGAL::face_index, m), E, cones, samples, 60.0, 1.0);
+    const auto out = splitter(copies, split);
+    REQUIRE(out.size() == 1);
+    REQUIRE(out[0].copies.size() == out[0].fields.size());
+    REQUIRE(out[0].split.size() == out[0].fields.size());
+    for(char x : out[0].split) CHECK(bool(x) == (split > 0));
+    for(std::size_t c : out[0].copies) CHECK(c == 0);
+    // the split copies keep the copy's distances at the corners
+    for(int k = 0; k < 3; ++k)
+    {
+      double lowest = std::numeric_limits<double>::infinity();
+      for(const auto& f : out[0].fields) { CHECK(f[k] >= d[k]); lowest = std::min(lowest, f[k]); }
+      CHECK(lowest == d[k]);
+    }
+    return std::make_pair(out[0], split);
+  };
+  const Front left{-2, 0}, above{0, 3}, left_too{-2, 0.3};
+  {
+    // the corner (0, 1) is reached from above, the two others from the left
+    std::array<Front, 3> fronts;
+    int top = 0;
+    for(int k = 0; k < 3; ++k)
+    {
+      fronts[k] = corner[k].y() == 1 ? above : left;
+      if(corner[k].y() == 1) top = k;
+    }
+    const auto [out, split] = run(fronts);
+    CHECK(split == 1);
+    REQUIRE(out.fields.size() == 2);
+    // each front's field is its cone at the corners it does not reach
+    const std::size_t from_left = out.fields[0][top] > out.fields[1][top] ? 0 : 1;
+    for(int k = 0; k < 3; ++k)
+    {
+      CHECK(out.fields[from_left][k] == Approx(distance_to(k, left.x, left.y)));
+      CHECK(out.fields[1 - from_left][k] == Approx(distance_to(k, above.x, above.y)));
+    }
+  }
+  {
+    const auto [out, split] = run({{left, left, left}}); // one front
+    CHECK(split == 0);
+    CHECK(out.fields.size() == 1);
+  }
+  {
+    const auto [out, split] = run({{left, left_too, left}}); // two fronts, 5 degrees apart: no kink
+    CHECK(split == 0);
+    CHECK(out.fields.size() == 1);
+  }
 }

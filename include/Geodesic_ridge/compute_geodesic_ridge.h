@@ -123,6 +123,10 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, minimum_spur_angle)
 /// Copies glued in E (one sheet) whose gradients jump by at least this angle
 /// across a mesh edge (degrees, default 60) still meet at a ridge there: where
 /// the cut graph lacks a branch, both fronts reach its faces inside one sheet.
+/// With the exact solver, a copy whose corners are reached by fronts (cones of
+/// the solver) that arrive this far apart is also split into one copy per
+/// front, and the split goes on into the copies glued to it
+/// (`internal::Kink_splitter`; counted in `Ridge_curve_statistics::split_copies`).
 /// 0 keeps the sheet-only definition (ridges between sheets only).
 GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle)
 /// \ingroup PkgGeodesicRidgeNamedParameters
@@ -334,12 +338,12 @@ void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vecto
 // the solver once `distance` is written); the solver must offer cones.
 template <class Point, class Solver, class Wanted>
 void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vector<double>& distance,
-              std::vector<Face_cone>& cones, const Wanted& wanted)
+              std::vector<Face_cone>& cones, const Wanted& wanted, const std::vector<std::array<double, 3> >& samples)
 {
   if constexpr(std::is_same<std::decay_t<Solver>, Exact_solver>::value)
   {
-    if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance), cones, wanted);
-    else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), cones, wanted);
+    if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance), cones, wanted, samples);
+    else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), cones, wanted, samples);
   }
   else
     throw Invalid_parameter_error(std::string("the cone field needs the exact solver, not '") + solver.name() + "'");
@@ -379,7 +383,8 @@ void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_sou
                     VertexIndexMap vim, Builder& builder, const Solver& solver, const Growth_schedule& schedule,
                     double mean_edge, Extended_surface<Point>& E, std::vector<Face_copies>& face_copies,
                     std::vector<double>& vertex_distances, Geodesic_ridge_statistics& st,
-                    std::vector<Face_cone>* cones = nullptr)
+                    std::vector<Face_cone>* cones = nullptr,
+                    const std::vector<std::array<double, 3> >& cone_samples = Exact_solver::cone_samples())
 {
   const Faces_across across = faces_across(tm, fim);
   // The growth rule (doc/manual.md, "The growth rule"): E grows a band of
@@ -457,7 +462,7 @@ void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_sou
         }
         return keep[copy] != 0;
       };
-      solve_on(E, solver, distance, *cones, wanted);
+      solve_on(E, solver, distance, *cones, wanted, cone_samples);
       ++st.solves;
     }
     else if(pass == Pass::solve) { solve_on(E, solver, distance); ++st.solves; }
@@ -515,7 +520,7 @@ void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_sou
     for(const Face_copies& fc : face_copies)
       for(std::size_t c : fc.copies) keep[c] = 1;
     const auto t0 = std::chrono::steady_clock::now();
-    solve_on(E, solver, distance, *cones, [&](std::size_t copy) { return keep[copy] != 0; });
+    solve_on(E, solver, distance, *cones, [&](std::size_t copy) { return keep[copy] != 0; }, cone_samples);
     ++st.solves;
     st.time_solve += seconds_since(t0);
   }
@@ -603,8 +608,11 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   std::vector<Face_copies> face_copies;
   const Growth_schedule schedule{extension_step, maximum_rings, maximum_solves, predicted, guided};
   std::vector<Face_cone> copy_cones;
+  // the exact solver's cones tell the fronts of a copy's corners apart (kinks inside one sheet)
+  const bool split_at_kinks = std::is_same<std::decay_t<decltype(solver)>, Exact_solver>::value && kink_angle > 0;
+  const auto& cone_samples = field_kind == Field::cone ? Exact_solver::cone_samples() : Exact_solver::corner_samples();
   grow_and_solve(tm, fim, src, vim, builder, solver, schedule, mean_edge, E, face_copies, result.vertex_distances, st,
-                 field_kind == Field::cone ? &copy_cones : nullptr);
+                 field_kind == Field::cone || split_at_kinks ? &copy_cones : nullptr, cone_samples);
   st.extended_surface = E.statistics;
   if(field_kind == Field::cone)
   {
@@ -617,8 +625,14 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 
   // Stage 2c + 3: exact envelopes and the ridge curve
   t0 = std::chrono::steady_clock::now();
-  assemble_ridge_curve(tm, E, face_copies, mean_edge, minimum_angle, kink_angle, vpm, vim, fim, eim, result.polylines,
+  std::size_t split_copies = 0;
+  const std::vector<Face_copies> fronts_of_faces =
+      split_at_kinks ? Kink_splitter<TriangleMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(fim)>, Point>(
+                           tm, vpm, fim, E, copy_cones, cone_samples, kink_angle, mean_edge)(face_copies, split_copies)
+                     : face_copies;
+  assemble_ridge_curve(tm, E, fronts_of_faces, mean_edge, minimum_angle, kink_angle, vpm, vim, fim, eim, result.polylines,
                        result.regions, st.ridge);
+  st.ridge.split_copies = split_copies;
   st.time_assembly = seconds_since(t0);
   st.ridge.time = st.time_assembly;
   if(st.ridge.components != 1 || st.ridge.cycles != static_cast<std::size_t>(2 * rcl.statistics.genus))

@@ -412,6 +412,7 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
     {
       const out_vertex a = rounded_vertex(polyline[i]), b = rounded_vertex(polyline[i + 1]);
       bool found = a != OGT::null_vertex() && b != OGT::null_vertex();
+      if(found && a == b) continue; // a segment shorter than the rounding: nothing to mark
       if(found && !mark(a, b))
       {
         const auto it = chain_of_side.find(a < b ? std::make_pair(a, b) : std::make_pair(b, a));

@@ -71,10 +71,18 @@ struct Exact_solver
   void operator()(const TriangleMesh& tm, const Source& s, VertexDistanceMap distance, std::vector<Face_cone>& cones,
                   const Wanted& wanted) const
   {
+    (*this)(tm, s, distance, cones, wanted, cone_samples());
+  }
+
+  /// Same, at the given sample points instead of `cone_samples()`.
+  template <class TriangleMesh, class Source, class VertexDistanceMap, class Wanted>
+  void operator()(const TriangleMesh& tm, const Source& s, VertexDistanceMap distance, std::vector<Face_cone>& cones,
+                  const Wanted& wanted, const std::vector<std::array<double, 3> >& samples) const
+  {
     SMSP<TriangleMesh> sp(tm);
     add_source(tm, sp, s);
     solve(tm, sp, distance);
-    face_cones(tm, sp, cones, wanted);
+    face_cones(tm, sp, cones, wanted, samples);
   }
 
   /// The points of a face (barycentric) whose shortest paths give its cones.
@@ -88,6 +96,14 @@ struct Exact_solver
     static const std::vector<std::array<double, 3> > samples = {
         {{1. / 3, 1. / 3, 1. / 3}}, {{0.8, 0.1, 0.1}}, {{0.1, 0.8, 0.1}}, {{0.1, 0.1, 0.8}},
         {{0.45, 0.45, 0.1}}, {{0.1, 0.45, 0.45}}, {{0.45, 0.1, 0.45}}};
+    return samples;
+  }
+
+  /// The three samples of `cone_samples()` nearest to the corners: one front
+  /// per corner, enough to tell the fronts of a face's corners apart.
+  static const std::vector<std::array<double, 3> >& corner_samples()
+  {
+    static const std::vector<std::array<double, 3> > samples(cone_samples().begin() + 1, cone_samples().begin() + 4);
     return samples;
   }
 
@@ -139,7 +155,8 @@ private:
   // goes straight through a flat vertex (angle sum 2π within 1e-9: on a
   // lattice, paths meet vertices exactly), so that is no bend.
   template <class TriangleMesh, class Solver, class Wanted>
-  static void face_cones(const TriangleMesh& tm, Solver& sp, std::vector<Face_cone>& cones, const Wanted& wanted)
+  static void face_cones(const TriangleMesh& tm, Solver& sp, std::vector<Face_cone>& cones, const Wanted& wanted,
+                         const std::vector<std::array<double, 3> >& samples)
   {
     typedef typename boost::graph_traits<TriangleMesh> GT;
     typedef typename Solver::Point_3 Point_3;
@@ -199,7 +216,7 @@ private:
         throw Apex_found();
       }
     };
-    const std::size_t S = cone_samples().size();
+    const std::size_t S = samples.size();
     cones.assign(S * num_faces(tm), Face_cone());
     for(auto f : faces(tm))
     {
@@ -208,7 +225,7 @@ private:
       const Point_3 p[3] = {get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm))};
       for(std::size_t i = 0; i < S; ++i)
       {
-        const std::array<double, 3>& sb = cone_samples()[i];
+        const std::array<double, 3>& sb = samples[i];
         const typename Solver::Barycentric_coordinates at = {{sb[0], sb[1], sb[2]}};
         const Point_3 q = sp.point(f, at);
         First_bend bend{sp, bends, get(CGAL::vertex_index, tm), q, false, q, 0, 0};
