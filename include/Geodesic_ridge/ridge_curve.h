@@ -242,7 +242,8 @@ private:
     for(std::size_t i = 0; i < S; ++i)
     {
       const Face_cone& cone = cones_[S * c + i];
-      if(cone.apex == samples_[i]) return false; // no apex: a source or no path
+      // no apex (a source or no path), or not read (not near a kink)
+      if(cone.apex == samples_[i] || std::abs(cone.apex[0] + cone.apex[1] + cone.apex[2] - 1) > 0.5) return false;
       add_front(Front{barycentric_to_point(cone.apex, p[0], p[1], p[2]), cone.offset}, fronts);
     }
     return true;
