@@ -27,12 +27,14 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <deque>
 #include <limits>
 #include <queue>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -127,587 +129,661 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// `field`, if given, holds a geodesic distance per vertex (by vertex index):
-// the tree then follows it (see below) instead of Dijkstra's edge distances.
-template <class TriangleMesh, class NamedParameters>
-Rough_cut_locus<TriangleMesh>
-rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
-                     const NamedParameters& np, const std::vector<double>* field = nullptr)
+// Stage 1 as its named steps (the manual's order), over the state they share.
+// `run()` calls them in order; each step reads what the steps before it left.
+template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class EdgeIndexMap,
+          class FaceIndexMap>
+class Rough_cut_locus_builder
 {
   typedef boost::graph_traits<TriangleMesh>  GT;
   typedef typename GT::vertex_descriptor    vertex_descriptor;
   typedef typename GT::halfedge_descriptor  halfedge_descriptor;
   typedef typename GT::edge_descriptor      edge_descriptor;
   typedef typename GT::face_descriptor      face_descriptor;
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
+  typedef Geodesic_source<TriangleMesh>     Source;
 
-  const auto t_start = std::chrono::steady_clock::now();
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const auto eim = CGAL::get_initialized_edge_index_map(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-
-  const std::size_t nv = num_vertices(tm), ne = num_edges(tm), nf = num_faces(tm);
-  auto vi = [&](vertex_descriptor v) { return static_cast<std::size_t>(get(vim, v)); };
-  auto ei = [&](edge_descriptor e) { return static_cast<std::size_t>(get(eim, e)); };
-  auto fi = [&](face_descriptor f) { return static_cast<std::size_t>(get(fim, f)); };
-
-  Rough_cut_locus<TriangleMesh> r;
-  r.source = src;
-  r.tolerance = get_tolerance(np);
-  Rough_cut_locus_statistics& st = r.statistics;
-  st.number_of_vertices = nv;
-  st.number_of_edges = ne;
-  st.number_of_faces = nf;
-  const long chi = static_cast<long>(nv) - static_cast<long>(ne) + static_cast<long>(nf);
-  st.genus = static_cast<int>((2 - chi) / 2);
-
-  std::vector<edge_descriptor> edge_of(ne);
-  for(edge_descriptor e : edges(tm))
+public:
+  // The curvature thresholds in radians.
+  struct Options
   {
-    if(ei(e) >= ne)
-      throw Invalid_mesh_error("mesh has removed elements (call collect_garbage() first)");
-    edge_of[ei(e)] = e;
-  }
-  std::vector<face_descriptor> face_of(nf);
-  for(face_descriptor f : faces(tm))
-  {
-    if(fi(f) >= nf)
-      throw Invalid_mesh_error("mesh has removed elements (call collect_garbage() first)");
-    face_of[fi(f)] = f;
-  }
+    double tolerance = default_tolerance, leaf_extension = 1, leaf_curvature = 0, branch_curvature = 0;
+  };
 
-  // ---------------------------------------------------------------------------
-  // 1. Shortest-path tree T (Boost Dijkstra, several seeds for a surface point).
-  auto t0 = std::chrono::steady_clock::now();
-  std::vector<double> length(ne);
-  for(edge_descriptor e : edges(tm))
-    length[ei(e)] = distance_between(vpm, source(e, tm), target(e, tm));
+  Rough_cut_locus_builder(const TriangleMesh& tm, const Source& src, VertexPointMap vpm,
+                          VertexIndexMap vim, EdgeIndexMap eim, FaceIndexMap fim, const Options& options)
+    : tm_(tm), src_(src), vpm_(vpm), vim_(vim), eim_(eim), fim_(fim), options_(options),
+      nv_(num_vertices(tm)), ne_(num_edges(tm)), nf_(num_faces(tm)), st_(r_.statistics)
+  {}
 
-  const double inf = std::numeric_limits<double>::infinity();
-  r.distance.assign(nv, inf);
-  r.parent.resize(nv);
-  for(vertex_descriptor v : vertices(tm)) r.parent[vi(v)] = v;
-  std::vector<vertex_descriptor> seed_vertices;
-  for(const auto& s : src.seeds)
+  // `field`, if given, holds a geodesic distance per vertex (by vertex index):
+  // the tree then follows it (`descend_field`) instead of Dijkstra's edge distances.
+  Rough_cut_locus<TriangleMesh> run(const std::vector<double>* field = nullptr)
   {
-    r.distance[vi(s.first)] = s.second;
-    seed_vertices.push_back(s.first);
-  }
-  boost::dijkstra_shortest_paths_no_init(
-      tm, seed_vertices.begin(), seed_vertices.end(),
-      boost::make_iterator_property_map(r.parent.begin(), vim),
-      boost::make_iterator_property_map(r.distance.begin(), vim),
-      boost::make_iterator_property_map(length.begin(), eim), vim,
-      std::less<double>(), boost::closed_plus<double>(inf), 0.0,
-      boost::default_dijkstra_visitor());
-  // A straight segment from the source is a geodesic (no edge path in R^3 is
-  // shorter), so seeds stay roots and a vertex source's neighbours hang from it,
-  // whatever ties the floating-point sums produced: the cut never touches the source.
-  for(const auto& s : src.seeds)
-  {
-    r.distance[vi(s.first)] = s.second;
-    r.parent[vi(s.first)] = s.first;
-  }
-  if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX)
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(src.vertex, tm))
+    const auto t_start = std::chrono::steady_clock::now();
+    auto t0 = t_start;
+    count_elements();
+    // 1. the shortest-path tree T
+    shortest_path_tree();
+    if(field != nullptr) descend_field(*field);
+    st_.time_shortest_path_tree = seconds_since(t0);
+    // 2. the dual T* and the significance of its edges
+    t0 = std::chrono::steady_clock::now();
+    classify_edges();
+    measure_face_areas();
+    build_dual_adjacency();
+    share_curvature_among_faces();
+    peel_significance();
+    st_.time_significance = seconds_since(t0);
+    // 3. pruning, then the primal cut graph K
+    t0 = std::chrono::steady_clock::now();
+    prune_by_significance();
+    prune_false_branches();
+    if(!st_.fallback_single_rung && options_.leaf_curvature > 0) extend_leaves_by_curvature();
+    else if(!st_.fallback_single_rung && options_.leaf_extension < 1) extend_leaves_by_significance();
+    record_dual_roles();
+    span_rungs();
+    close_handle_cycles();
+    remove_teeth();
+    if(!st_.fallback_single_rung && options_.leaf_curvature > 0)
     {
-      const vertex_descriptor u = source(h, tm);
-      r.parent[vi(u)] = src.vertex;
-      r.distance[vi(u)] = length[ei(edge(h, tm))];
+      move_leaves_onto_corners();
+      join_corners();
     }
-  for(vertex_descriptor v : vertices(tm))
-    if(!(r.distance[vi(v)] < inf))
-      throw Invalid_mesh_error("vertex " + std::to_string(vi(v)) +
-                               " cannot be reached from the source");
+    collect_cut_edges();
+    st_.time_cut_graph = seconds_since(t0);
+    // 4. the check that cutting along K gives a disk
+    t0 = std::chrono::steady_clock::now();
+    check_disk();
+    st_.time_disk_check = seconds_since(t0);
+    st_.time_total = seconds_since(t_start);
+    return std::move(r_);
+  }
 
-  // With a geodesic field, every vertex hangs from the neighbour u of smaller
-  // field value that minimizes field(u) + |uv|: the tree descends the true
-  // distance instead of Dijkstra's staircase paths, whose anisotropy on regular
-  // meshes makes significant dual branches far from the real ridge. Strictly
-  // decreasing values make it a tree; where a vertex has no lower neighbour it
-  // keeps its Dijkstra parent, and if that mix ever closed a cycle, the whole
-  // Dijkstra tree is kept.
-  if(field != nullptr)
+private:
+  std::size_t vi(vertex_descriptor v) const { return static_cast<std::size_t>(get(vim_, v)); }
+  std::size_t ei(edge_descriptor e) const { return static_cast<std::size_t>(get(eim_, e)); }
+  std::size_t fi(face_descriptor f) const { return static_cast<std::size_t>(get(fim_, f)); }
+  double significance(std::size_t d) const { return r_.significance[ei(r_.dual_edges[d])]; }
+  // the face of dual edge d other than f
+  std::size_t across(std::size_t d, std::size_t f) const
   {
-    std::vector<vertex_descriptor> dijkstra_parent = r.parent;
-    std::vector<char> is_root(nv, 0);
-    for(const auto& sd : src.seeds) is_root[vi(sd.first)] = 1;
-    for(vertex_descriptor v : vertices(tm))
+    return dual_faces_of_[d][0] == f ? dual_faces_of_[d][1] : dual_faces_of_[d][0];
+  }
+  static constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+  bool curvature_sums() const { return options_.leaf_curvature > 0 || options_.branch_curvature > 0; }
+
+  void count_elements()
+  {
+    r_.source = src_;
+    r_.tolerance = options_.tolerance;
+    st_.number_of_vertices = nv_;
+    st_.number_of_edges = ne_;
+    st_.number_of_faces = nf_;
+    const long chi = static_cast<long>(nv_) - static_cast<long>(ne_) + static_cast<long>(nf_);
+    st_.genus = static_cast<int>((2 - chi) / 2);
+    edge_of_.resize(ne_);
+    for(edge_descriptor e : edges(tm_))
     {
-      if(is_root[vi(v)]) continue;
-      if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX && r.parent[vi(v)] == src.vertex &&
-         v != src.vertex)
-        continue; // the source's neighbours stay its children
-      double best = inf;
-      for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
+      if(ei(e) >= ne_)
+        throw Invalid_mesh_error("mesh has removed elements (call collect_garbage() first)");
+      edge_of_[ei(e)] = e;
+    }
+    face_of_.resize(nf_);
+    for(face_descriptor f : faces(tm_))
+    {
+      if(fi(f) >= nf_)
+        throw Invalid_mesh_error("mesh has removed elements (call collect_garbage() first)");
+      face_of_[fi(f)] = f;
+    }
+    is_seed_.assign(nv_, 0);
+    for(const auto& s : src_.seeds) is_seed_[vi(s.first)] = 1;
+  }
+
+  // Step 1: Boost's Dijkstra on the mesh graph, several seeds for a surface point.
+  void shortest_path_tree()
+  {
+    length_.resize(ne_);
+    for(edge_descriptor e : edges(tm_))
+      length_[ei(e)] = distance_between(vpm_, source(e, tm_), target(e, tm_));
+    const double inf = std::numeric_limits<double>::infinity();
+    r_.distance.assign(nv_, inf);
+    r_.parent.resize(nv_);
+    for(vertex_descriptor v : vertices(tm_)) r_.parent[vi(v)] = v;
+    std::vector<vertex_descriptor> seed_vertices;
+    for(const auto& s : src_.seeds)
+    {
+      r_.distance[vi(s.first)] = s.second;
+      seed_vertices.push_back(s.first);
+    }
+    boost::dijkstra_shortest_paths_no_init(
+        tm_, seed_vertices.begin(), seed_vertices.end(),
+        boost::make_iterator_property_map(r_.parent.begin(), vim_),
+        boost::make_iterator_property_map(r_.distance.begin(), vim_),
+        boost::make_iterator_property_map(length_.begin(), eim_), vim_,
+        std::less<double>(), boost::closed_plus<double>(inf), 0.0,
+        boost::default_dijkstra_visitor());
+    // A straight segment from the source is a geodesic (no edge path in R^3 is
+    // shorter), so seeds stay roots and a vertex source's neighbours hang from it,
+    // whatever ties the floating-point sums produced: the cut never touches the source.
+    for(const auto& s : src_.seeds)
+    {
+      r_.distance[vi(s.first)] = s.second;
+      r_.parent[vi(s.first)] = s.first;
+    }
+    if(src_.kind == Source::ON_VERTEX)
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(src_.vertex, tm_))
       {
-        const vertex_descriptor u = source(h, tm);
-        if(!((*field)[vi(u)] < (*field)[vi(v)])) continue;
-        const double value = (*field)[vi(u)] + length[ei(edge(h, tm))];
-        if(value < best) { best = value; r.parent[vi(v)] = u; }
+        const vertex_descriptor u = source(h, tm_);
+        r_.parent[vi(u)] = src_.vertex;
+        r_.distance[vi(u)] = length_[ei(edge(h, tm_))];
+      }
+    for(vertex_descriptor v : vertices(tm_))
+      if(!(r_.distance[vi(v)] < inf))
+        throw Invalid_mesh_error("vertex " + std::to_string(vi(v)) + " cannot be reached from the source");
+  }
+
+  // Step 1, with a geodesic field: every vertex hangs from the neighbour u of
+  // smaller field value that minimizes field(u) + |uv|, so the tree descends the
+  // true distance instead of Dijkstra's staircase paths, whose anisotropy on
+  // regular meshes makes significant dual branches far from the real ridge.
+  // Strictly decreasing values make it a tree; where a vertex has no lower
+  // neighbour it keeps its Dijkstra parent, and if that mix ever closed a
+  // cycle, the whole Dijkstra tree is kept.
+  void descend_field(const std::vector<double>& field)
+  {
+    std::vector<vertex_descriptor> dijkstra_parent = r_.parent;
+    for(vertex_descriptor v : vertices(tm_))
+    {
+      if(is_seed_[vi(v)]) continue;
+      if(src_.kind == Source::ON_VERTEX && r_.parent[vi(v)] == src_.vertex && v != src_.vertex)
+        continue; // the source's neighbours stay its children
+      double best = std::numeric_limits<double>::infinity();
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_))
+      {
+        const vertex_descriptor u = source(h, tm_);
+        if(!(field[vi(u)] < field[vi(v)])) continue;
+        const double value = field[vi(u)] + length_[ei(edge(h, tm_))];
+        if(value < best) { best = value; r_.parent[vi(v)] = u; }
       }
     }
-    // a tree iff every vertex reaches a root
-    std::vector<char> state(nv, 0); // 0 unknown, 1 in progress, 2 reaches a root
-    bool tree = true;
-    for(vertex_descriptor v : vertices(tm))
+    if(!parents_form_a_tree()) r_.parent = dijkstra_parent;
+    else
+      for(vertex_descriptor v : vertices(tm_)) r_.distance[vi(v)] = field[vi(v)];
+  }
+
+  // A tree iff every vertex reaches a root (a seed) through its parents.
+  bool parents_form_a_tree() const
+  {
+    std::vector<char> state(nv_, 0); // 0 unknown, 1 in progress, 2 reaches a root
+    for(vertex_descriptor v : vertices(tm_))
     {
       std::vector<std::size_t> path;
       std::size_t x = vi(v);
-      while(state[x] == 0 && !is_root[x])
+      while(state[x] == 0 && !is_seed_[x])
       {
         state[x] = 1;
         path.push_back(x);
-        x = vi(r.parent[x]);
+        x = vi(r_.parent[x]);
       }
-      if(state[x] == 1) { tree = false; break; }
+      if(state[x] == 1) return false;
       for(std::size_t y : path) state[y] = 2;
       state[x] = 2;
     }
-    if(!tree) r.parent = dijkstra_parent;
-    else
-      for(vertex_descriptor v : vertices(tm)) r.distance[vi(v)] = (*field)[vi(v)];
+    return true;
   }
-  st.time_shortest_path_tree = seconds_since(t0);
 
-  // ---------------------------------------------------------------------------
-  // 2. Edge roles and the dual T*; significance by peeling leaves of T* (O(F)).
-  t0 = std::chrono::steady_clock::now();
-  std::vector<char> is_source_face(nf, 0);
-  for(face_descriptor f : src.faces) is_source_face[fi(f)] = 1;
-  r.edge_role.assign(ne, Edge_role::dual_pruned);
-  r.significance.assign(ne, std::numeric_limits<double>::quiet_NaN());
-  for(edge_descriptor e : edges(tm))
+  // Step 2: every edge is in T, on a face holding the source, or crossed by T*.
+  void classify_edges()
   {
-    const halfedge_descriptor h = halfedge(e, tm);
-    const vertex_descriptor a = source(h, tm), b = target(h, tm);
-    const bool in_tree = (r.parent[vi(a)] == b && a != b) || (r.parent[vi(b)] == a && a != b);
-    if(in_tree)
-      r.edge_role[ei(e)] = Edge_role::shortest_path_tree;
-    else if(is_source_face[fi(face(h, tm))] || is_source_face[fi(face(opposite(h, tm), tm))])
-      r.edge_role[ei(e)] = Edge_role::source_face;
-    else
-      r.dual_edges.push_back(e);
-  }
-  st.number_of_dual_edges = r.dual_edges.size();
-  const std::size_t dual_faces = nf - src.faces.size();
-  if(static_cast<long>(r.dual_edges.size()) != static_cast<long>(dual_faces) - 1 + 2 * st.genus)
-    throw Algorithm_error("the dual of the shortest-path tree has " +
-                          std::to_string(r.dual_edges.size()) + " edges, expected " +
-                          std::to_string(static_cast<long>(dual_faces) - 1 + 2 * st.genus));
-
-  std::vector<double> area(nf);
-  r.total_area = 0;
-  for(face_descriptor f : faces(tm))
-  {
-    area[fi(f)] = CGAL::Polygon_mesh_processing::face_area(f, tm, CGAL::parameters::vertex_point_map(vpm));
-    r.total_area += area[fi(f)];
-  }
-  const double total = r.total_area;
-  // The faces holding a surface-point source are no nodes of T*: the two sides
-  // of a dual edge share the rest of the area.
-  double node_total = total;
-  for(face_descriptor f : src.faces) node_total -= area[fi(f)];
-
-  // dual adjacency, by position in dual_edges
-  const std::size_t nd = r.dual_edges.size();
-  std::vector<std::array<std::size_t, 2> > dual_faces_of(nd);
-  std::vector<std::array<std::size_t, 3> > dual_of_face(nf);
-  std::vector<unsigned char> dual_degree(nf, 0);
-  for(std::size_t d = 0; d < nd; ++d)
-  {
-    const halfedge_descriptor h = halfedge(r.dual_edges[d], tm);
-    const std::size_t f1 = fi(face(h, tm)), f2 = fi(face(opposite(h, tm), tm));
-    dual_faces_of[d] = {f1, f2};
-    dual_of_face[f1][dual_degree[f1]++] = d;
-    dual_of_face[f2][dual_degree[f2]++] = d;
-  }
-  // the face of dual edge d other than f
-  auto across = [&](std::size_t d, std::size_t f) {
-    return dual_faces_of[d][0] == f ? dual_faces_of[d][1] : dual_faces_of[d][0];
-  };
-  // Peel leaves: when a face becomes a leaf, its one remaining dual edge
-  // separates the faces accumulated in it from the rest. What is never peeled
-  // is the 2-core (the non-contractible cycles and the paths joining them).
-  const std::size_t none = std::numeric_limits<std::size_t>::max();
-  // Gaussian curvature (2π − angle sum) of every vertex, shared among its
-  // faces by angle, accumulated per branch of T* like the area (with its
-  // positive part): the false branches and the leaf curvature extension
-  // (below) follow it.
-  const double leaf_curvature = get_leaf_curvature(np) * 3.14159265358979323846 / 180.0;
-  const double branch_curvature_min = get_branch_curvature(np) * 3.14159265358979323846 / 180.0;
-  const bool curvature_sums = leaf_curvature > 0 || branch_curvature_min > 0;
-  std::vector<double> curvature_share, positive_share;
-  // (the corner angles serve the leaves at corners, step 3d, too)
-  const Corner_angles angles = curvature_sums ? corner_angles(tm, vpm, vim, fim) : Corner_angles();
-  if(curvature_sums)
-  {
-    curvature_share.assign(nf, 0.0);
-    positive_share.assign(nf, 0.0);
-    for(face_descriptor f : faces(tm))
+    std::vector<char> is_source_face(nf_, 0);
+    for(face_descriptor f : src_.faces) is_source_face[fi(f)] = 1;
+    r_.edge_role.assign(ne_, Edge_role::dual_pruned);
+    r_.significance.assign(ne_, std::numeric_limits<double>::quiet_NaN());
+    for(edge_descriptor e : edges(tm_))
     {
-      halfedge_descriptor h = halfedge(f, tm);
-      for(int k = 0; k < 3; ++k, h = next(h, tm))
+      const halfedge_descriptor h = halfedge(e, tm_);
+      const vertex_descriptor a = source(h, tm_), b = target(h, tm_);
+      const bool in_tree = (r_.parent[vi(a)] == b && a != b) || (r_.parent[vi(b)] == a && a != b);
+      if(in_tree)
+        r_.edge_role[ei(e)] = Edge_role::shortest_path_tree;
+      else if(is_source_face[fi(face(h, tm_))] || is_source_face[fi(face(opposite(h, tm_), tm_))])
+        r_.edge_role[ei(e)] = Edge_role::source_face;
+      else
+        r_.dual_edges.push_back(e);
+    }
+    st_.number_of_dual_edges = r_.dual_edges.size();
+    const long expected = static_cast<long>(nf_ - src_.faces.size()) - 1 + 2 * st_.genus;
+    if(static_cast<long>(r_.dual_edges.size()) != expected)
+      throw Algorithm_error("the dual of the shortest-path tree has " + std::to_string(r_.dual_edges.size()) +
+                            " edges, expected " + std::to_string(expected));
+  }
+
+  void measure_face_areas()
+  {
+    area_.resize(nf_);
+    r_.total_area = 0;
+    for(face_descriptor f : faces(tm_))
+    {
+      area_[fi(f)] = CGAL::Polygon_mesh_processing::face_area(f, tm_, CGAL::parameters::vertex_point_map(vpm_));
+      r_.total_area += area_[fi(f)];
+    }
+    // The faces holding a surface-point source are no nodes of T*: the two sides
+    // of a dual edge share the rest of the area.
+    node_total_ = r_.total_area;
+    for(face_descriptor f : src_.faces) node_total_ -= area_[fi(f)];
+  }
+
+  // the faces of every dual edge, and the dual edges of every face (by position in dual_edges)
+  void build_dual_adjacency()
+  {
+    nd_ = r_.dual_edges.size();
+    dual_faces_of_.resize(nd_);
+    dual_of_face_.resize(nf_);
+    dual_degree_.assign(nf_, 0);
+    for(std::size_t d = 0; d < nd_; ++d)
+    {
+      const halfedge_descriptor h = halfedge(r_.dual_edges[d], tm_);
+      const std::size_t f1 = fi(face(h, tm_)), f2 = fi(face(opposite(h, tm_), tm_));
+      dual_faces_of_[d] = {f1, f2};
+      dual_of_face_[f1][dual_degree_[f1]++] = d;
+      dual_of_face_[f2][dual_degree_[f2]++] = d;
+    }
+  }
+
+  // Gaussian curvature (2π − angle sum) of every vertex, shared among its
+  // faces by angle (and its positive part): the peeling accumulates it per
+  // branch of T* like the area, for the false branches and the leaf curvature
+  // extension. The corner angles serve the leaves at corners too.
+  void share_curvature_among_faces()
+  {
+    if(!curvature_sums()) return;
+    angles_ = corner_angles(tm_, vpm_, vim_, fim_);
+    curvature_share_.assign(nf_, 0.0);
+    positive_share_.assign(nf_, 0.0);
+    for(face_descriptor f : faces(tm_))
+    {
+      halfedge_descriptor h = halfedge(f, tm_);
+      for(int k = 0; k < 3; ++k, h = next(h, tm_))
       {
-        const std::size_t v = vi(source(h, tm));
+        const std::size_t v = vi(source(h, tm_));
         // the source is no leaf of its own cut locus
-        if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX && source(h, tm) == src.vertex) continue;
-        curvature_share[fi(f)] += angles.curvature(v) * angles.angle[fi(f)][k] / angles.angle_sum[v];
-        positive_share[fi(f)] += std::max(0.0, angles.curvature(v)) * angles.angle[fi(f)][k] / angles.angle_sum[v];
+        if(src_.kind == Source::ON_VERTEX && source(h, tm_) == src_.vertex) continue;
+        const double share = angles_.angle[fi(f)][k] / angles_.angle_sum[v];
+        curvature_share_[fi(f)] += angles_.curvature(v) * share;
+        positive_share_[fi(f)] += std::max(0.0, angles_.curvature(v)) * share;
       }
     }
   }
-  std::vector<double> branch_curvature(curvature_share), subtree_curvature(curvature_sums ? nd : 0, 0.0);
-  std::vector<double> branch_positive(positive_share), subtree_positive(curvature_sums ? nd : 0, 0.0);
-  std::vector<double> accumulated(area);
-  std::vector<unsigned char> degree(dual_degree);
-  std::vector<char> peeled(nd, 0);
-  std::vector<std::size_t> child_face(nd, none), peel_order;
-  peel_order.reserve(nd);
-  std::vector<std::size_t> queue;
-  for(std::size_t f = 0; f < nf; ++f)
-    if(degree[f] == 1) queue.push_back(f);
-  for(std::size_t qi = 0; qi < queue.size(); ++qi)
-  {
-    const std::size_t f = queue[qi];
-    if(degree[f] != 1) continue;
-    std::size_t d = none;
-    for(unsigned char k = 0; k < dual_degree[f]; ++k)
-      if(!peeled[dual_of_face[f][k]]) d = dual_of_face[f][k];
-    peeled[d] = 1;
-    child_face[d] = f;
-    peel_order.push_back(d);
-    const double side = accumulated[f];
-    r.significance[ei(r.dual_edges[d])] = (std::min)(side, node_total - side);
-    const std::size_t p = across(d, f);
-    accumulated[p] += side;
-    if(curvature_sums)
-    {
-      subtree_curvature[d] = branch_curvature[f];
-      branch_curvature[p] += branch_curvature[f];
-      subtree_positive[d] = branch_positive[f];
-      branch_positive[p] += branch_positive[f];
-    }
-    degree[f] = 0;
-    if(--degree[p] == 1) queue.push_back(p);
-  }
-  for(std::size_t d = 0; d < nd; ++d)
-    if(!peeled[d])
-    {
-      r.significance[ei(r.dual_edges[d])] = total;
-      ++st.number_of_core_dual_edges;
-    }
-  st.time_significance = seconds_since(t0);
 
-  // ---------------------------------------------------------------------------
-  // 3. Pruning, then the primal cut graph K.
-  t0 = std::chrono::steady_clock::now();
-  const double threshold = r.tolerance * total;
-  std::vector<char> kept(nd, 0);
-  std::size_t nkept = 0;
-  for(std::size_t d = 0; d < nd; ++d)
-    if(r.significance[ei(r.dual_edges[d])] >= threshold) { kept[d] = 1; ++nkept; }
-  if(nkept == 0 && nd > 0)
+  // Peel leaves of T* (O(F)): when a face becomes a leaf, its one remaining dual
+  // edge separates the faces accumulated in it from the rest. What is never
+  // peeled is the 2-core (the non-contractible cycles and the paths joining
+  // them); its edges get the total area.
+  void peel_significance()
   {
-    // Genus 0 with a tolerance close to 1/2: keep the most significant dual
-    // edge, so that K is one slit and the cut surface still a disk.
-    std::size_t best = 0;
-    for(std::size_t d = 1; d < nd; ++d)
-      if(r.significance[ei(r.dual_edges[d])] > r.significance[ei(r.dual_edges[best])]) best = d;
-    kept[best] = 1;
-    nkept = 1;
-    st.fallback_single_rung = true;
-  }
-  std::vector<unsigned char> kept_degree(nf, 0);
-  for(std::size_t d = 0; d < nd; ++d)
-    if(kept[d])
+    std::vector<double> branch_curvature(curvature_share_), branch_positive(positive_share_);
+    subtree_curvature_.assign(curvature_sums() ? nd_ : 0, 0.0);
+    subtree_positive_.assign(curvature_sums() ? nd_ : 0, 0.0);
+    std::vector<double> accumulated(area_);
+    std::vector<unsigned char> degree(dual_degree_);
+    peeled_.assign(nd_, 0);
+    child_face_.assign(nd_, none);
+    peel_order_.reserve(nd_);
+    std::vector<std::size_t> queue;
+    for(std::size_t f = 0; f < nf_; ++f)
+      if(degree[f] == 1) queue.push_back(f);
+    for(std::size_t qi = 0; qi < queue.size(); ++qi)
     {
-      ++kept_degree[dual_faces_of[d][0]];
-      ++kept_degree[dual_faces_of[d][1]];
-    }
-  // 3+. Branches that enclose no curvature are false (see
-  //     parameters::branch_curvature): pruned back from their tips while the
-  //     curvature beyond the tip's dual edge is below the minimum. The 2-core
-  //     (genus) is never touched; one dual edge at least is kept.
-  std::vector<char> false_branch(nd, 0);
-  if(branch_curvature_min > 0 && !st.fallback_single_rung)
-  {
-    double total_curvature = 0;
-    for(double c : curvature_share) total_curvature += c;
-    double total_positive = 0;
-    for(double c : positive_share) total_positive += c;
-    // the curvature, and its positive part, on the side of d that encloses the
-    // two paths' meeting: the branch's side, or on genus 0 the side of less
-    // curvature
-    auto enclosed = [&](std::size_t d) {
-      const double c = subtree_curvature[d];
-      if(st.genus == 0 && total_curvature - c < c)
-        return std::make_pair(total_curvature - c, total_positive - subtree_positive[d]);
-      return std::make_pair(c, subtree_positive[d]);
-    };
-    std::vector<std::size_t> tips;
-    for(std::size_t f = 0; f < nf; ++f) if(kept_degree[f] == 1) tips.push_back(f);
-    while(!tips.empty() && nkept > 1)
-    {
-      const std::size_t f = tips.back();
-      tips.pop_back();
-      if(kept_degree[f] != 1) continue;
+      const std::size_t f = queue[qi];
+      if(degree[f] != 1) continue;
       std::size_t d = none;
-      for(unsigned char k = 0; k < dual_degree[f]; ++k)
-        if(kept[dual_of_face[f][k]]) d = dual_of_face[f][k];
-      // false: nearly no curvature enclosed, and no bump either (a bump with
-      // its saddle-shaped foot encloses little in total but splits fronts)
-      if(!peeled[d]) continue;
-      const auto [net, positive] = enclosed(d);
-      if(net >= branch_curvature_min || positive >= 2 * branch_curvature_min) continue;
-      kept[d] = 0;
-      false_branch[d] = 1;
-      --nkept;
-      ++st.number_of_curvature_pruned_dual_edges;
-      kept_degree[f] = 0;
+      for(unsigned char k = 0; k < dual_degree_[f]; ++k)
+        if(!peeled_[dual_of_face_[f][k]]) d = dual_of_face_[f][k];
+      peeled_[d] = 1;
+      child_face_[d] = f;
+      peel_order_.push_back(d);
+      const double side = accumulated[f];
+      r_.significance[ei(r_.dual_edges[d])] = (std::min)(side, node_total_ - side);
       const std::size_t p = across(d, f);
-      if(--kept_degree[p] == 1) tips.push_back(p);
+      accumulated[p] += side;
+      if(curvature_sums())
+      {
+        subtree_curvature_[d] = branch_curvature[f];
+        branch_curvature[p] += branch_curvature[f];
+        subtree_positive_[d] = branch_positive[f];
+        branch_positive[p] += branch_positive[f];
+      }
+      degree[f] = 0;
+      if(--degree[p] == 1) queue.push_back(p);
     }
+    for(std::size_t d = 0; d < nd_; ++d)
+      if(!peeled_[d])
+      {
+        r_.significance[ei(r_.dual_edges[d])] = r_.total_area;
+        ++st_.number_of_core_dual_edges;
+      }
   }
-  for(std::size_t f = 0; f < nf; ++f) st.number_of_kept_dual_leaves += (kept_degree[f] == 1);
 
-  // 3-. Extensions of the kept structure into pruned branches. The ridge
-  //     shows only where K cuts: beyond K's end, the disk's copy of a face
-  //     carries the smaller of the two fronts at its corners and dominates
-  //     every other copy. The leaves of the cut locus of a polyhedral surface
-  //     are vertices of positive curvature:
-  //     * leaf_curvature: every pruned branch that holds at least that much
-  //       Gaussian curvature is kept, outwards from the kept structure (paths
-  //       to the curvature, branching only where two branches both hold enough);
-  //     * else leaf_extension: from every leaf face of the kept structure, go
-  //       on into its most significant pruned child branch while that is
-  //       significant enough (one path per leaf).
-  std::vector<char> extension(nd, 0);
-  const double leaf_extension = get_leaf_extension(np);
-  const double extension_threshold = leaf_extension * threshold;
-  if(!st.fallback_single_rung && leaf_curvature > 0)
+  // Step 3: keep the dual edges of significance at least tolerance × area.
+  void prune_by_significance()
   {
-    // every pruned branch hanging from the kept structure (or from a branch
-    // added here) that holds at least `leaf_curvature` of curvature: from the
-    // core outwards (reverse peeling order), so a branch's parent is decided first
-    // (with hysteresis: an added branch goes on into its child branch of most
-    // curvature while that holds a quarter of it, so that it reaches the
-    // vertex whose curvature its last faces share)
-    auto parent_of = [&](std::size_t d) {
-      return across(d, child_face[d]);
-    };
-    std::vector<std::size_t> best_child(nf, none);
-    for(std::size_t d : peel_order)
+    threshold_ = r_.tolerance * r_.total_area;
+    kept_.assign(nd_, 0);
+    for(std::size_t d = 0; d < nd_; ++d)
+      if(significance(d) >= threshold_) { kept_[d] = 1; ++nkept_; }
+    if(nkept_ == 0 && nd_ > 0)
+    {
+      // Genus 0 with a tolerance close to 1/2: keep the most significant dual
+      // edge, so that K is one slit and the cut surface still a disk.
+      std::size_t best = 0;
+      for(std::size_t d = 1; d < nd_; ++d)
+        if(significance(d) > significance(best)) best = d;
+      kept_[best] = 1;
+      nkept_ = 1;
+      st_.fallback_single_rung = true;
+    }
+    kept_degree_.assign(nf_, 0);
+    for(std::size_t d = 0; d < nd_; ++d)
+      if(kept_[d])
+      {
+        ++kept_degree_[dual_faces_of_[d][0]];
+        ++kept_degree_[dual_faces_of_[d][1]];
+      }
+  }
+
+  // Branches that enclose no curvature are false (see parameters::branch_curvature):
+  // pruned back from their tips while the curvature beyond the tip's dual edge
+  // is below the minimum. The 2-core (genus) is never touched; one dual edge at
+  // least is kept.
+  void prune_false_branches()
+  {
+    false_branch_.assign(nd_, 0);
+    if(options_.branch_curvature > 0 && !st_.fallback_single_rung)
+    {
+      double total_curvature = 0, total_positive = 0;
+      for(double c : curvature_share_) total_curvature += c;
+      for(double c : positive_share_) total_positive += c;
+      // the curvature, and its positive part, on the side of d that encloses the
+      // two paths' meeting: the branch's side, or on genus 0 the side of less curvature
+      auto enclosed = [&](std::size_t d) {
+        const double c = subtree_curvature_[d];
+        if(st_.genus == 0 && total_curvature - c < c)
+          return std::make_pair(total_curvature - c, total_positive - subtree_positive_[d]);
+        return std::make_pair(c, subtree_positive_[d]);
+      };
+      std::vector<std::size_t> tips;
+      for(std::size_t f = 0; f < nf_; ++f) if(kept_degree_[f] == 1) tips.push_back(f);
+      while(!tips.empty() && nkept_ > 1)
+      {
+        const std::size_t f = tips.back();
+        tips.pop_back();
+        if(kept_degree_[f] != 1) continue;
+        std::size_t d = none;
+        for(unsigned char k = 0; k < dual_degree_[f]; ++k)
+          if(kept_[dual_of_face_[f][k]]) d = dual_of_face_[f][k];
+        if(!peeled_[d]) continue;
+        // false: nearly no curvature enclosed, and no bump either (a bump with
+        // its saddle-shaped foot encloses little in total but splits fronts)
+        const auto [net, positive] = enclosed(d);
+        if(net >= options_.branch_curvature || positive >= 2 * options_.branch_curvature) continue;
+        kept_[d] = 0;
+        false_branch_[d] = 1;
+        --nkept_;
+        ++st_.number_of_curvature_pruned_dual_edges;
+        kept_degree_[f] = 0;
+        const std::size_t p = across(d, f);
+        if(--kept_degree_[p] == 1) tips.push_back(p);
+      }
+    }
+    for(std::size_t f = 0; f < nf_; ++f) st_.number_of_kept_dual_leaves += (kept_degree_[f] == 1);
+    extension_.assign(nd_, 0);
+  }
+
+  // Extensions of the kept structure into pruned branches. The ridge shows only
+  // where K cuts: beyond K's end, the disk's copy of a face carries the smaller
+  // of the two fronts at its corners and dominates every other copy. The leaves
+  // of the cut locus of a polyhedral surface are vertices of positive curvature,
+  // so every pruned branch that holds at least `leaf_curvature` of Gaussian
+  // curvature is kept, outwards from the kept structure (paths to the curvature,
+  // branching only where two branches both hold enough). From the core outwards
+  // (reverse peeling order), so a branch's parent is decided first; with
+  // hysteresis: an added branch goes on into its child branch of most curvature
+  // while that holds a quarter of it, so that it reaches the vertex whose
+  // curvature its last faces share.
+  void extend_leaves_by_curvature()
+  {
+    auto parent_of = [&](std::size_t d) { return across(d, child_face_[d]); };
+    std::vector<std::size_t> best_child(nf_, none);
+    for(std::size_t d : peel_order_)
     {
       const std::size_t p = parent_of(d);
-      if(best_child[p] == none || subtree_curvature[d] > subtree_curvature[best_child[p]]) best_child[p] = d;
+      if(best_child[p] == none || subtree_curvature_[d] > subtree_curvature_[best_child[p]]) best_child[p] = d;
     }
-    std::vector<char> inside(nf, 0); // 1 kept, 2 reached by an extension
-    for(std::size_t f = 0; f < nf; ++f) inside[f] = kept_degree[f] > 0 ? 1 : 0;
-    for(auto it = peel_order.rbegin(); it != peel_order.rend(); ++it)
+    std::vector<char> inside(nf_, 0); // 1 kept, 2 reached by an extension
+    for(std::size_t f = 0; f < nf_; ++f) inside[f] = kept_degree_[f] > 0 ? 1 : 0;
+    for(auto it = peel_order_.rbegin(); it != peel_order_.rend(); ++it)
     {
       const std::size_t d = *it;
       const std::size_t p = parent_of(d);
-      if(kept[d] || false_branch[d] || !inside[p]) continue;
-      const bool goes_on = inside[p] == 2 && best_child[p] == d && subtree_curvature[d] >= 0.25 * leaf_curvature;
-      if(!goes_on && subtree_curvature[d] < leaf_curvature) continue;
-      extension[d] = 1;
-      inside[child_face[d]] = 2;
+      if(kept_[d] || false_branch_[d] || !inside[p]) continue;
+      const bool goes_on =
+          inside[p] == 2 && best_child[p] == d && subtree_curvature_[d] >= 0.25 * options_.leaf_curvature;
+      if(!goes_on && subtree_curvature_[d] < options_.leaf_curvature) continue;
+      extension_[d] = 1;
+      inside[child_face_[d]] = 2;
     }
   }
-  else if(!st.fallback_single_rung && leaf_extension < 1)
-    for(std::size_t f = 0; f < nf; ++f)
+
+  // The paper-free alternative (`leaf_extension`): from every leaf face of the
+  // kept structure, go on into its most significant pruned child branch while
+  // that is significant enough (one path per leaf).
+  void extend_leaves_by_significance()
+  {
+    const double extension_threshold = options_.leaf_extension * threshold_;
+    for(std::size_t f = 0; f < nf_; ++f)
     {
-      if(kept_degree[f] != 1) continue;
+      if(kept_degree_[f] != 1) continue;
       for(std::size_t cur = f;;)
       {
         std::size_t best = none;
-        for(unsigned char k = 0; k < dual_degree[cur]; ++k)
+        for(unsigned char k = 0; k < dual_degree_[cur]; ++k)
         {
-          const std::size_t d = dual_of_face[cur][k];
-          if(kept[d] || extension[d] || false_branch[d] || !peeled[d] || child_face[d] == cur) continue;
-          const double I = r.significance[ei(r.dual_edges[d])];
-          if(I >= extension_threshold && (best == none || I > r.significance[ei(r.dual_edges[best])])) best = d;
+          const std::size_t d = dual_of_face_[cur][k];
+          if(kept_[d] || extension_[d] || false_branch_[d] || !peeled_[d] || child_face_[d] == cur) continue;
+          if(significance(d) >= extension_threshold && (best == none || significance(d) > significance(best)))
+            best = d;
         }
         if(best == none) break;
-        extension[best] = 1;
-        cur = child_face[best];
+        extension_[best] = 1;
+        cur = child_face_[best];
       }
-    }
-  {
-    std::vector<unsigned char> degree_with_extension(kept_degree);
-    for(std::size_t d = 0; d < nd; ++d)
-      if(extension[d])
-      {
-        ++degree_with_extension[dual_faces_of[d][0]];
-        ++degree_with_extension[dual_faces_of[d][1]];
-      }
-    for(std::size_t f = 0; f < nf; ++f) st.number_of_extended_dual_leaves += (degree_with_extension[f] == 1);
-  }
-  for(std::size_t d = 0; d < nd; ++d)
-    if(false_branch[d]) r.edge_role[ei(r.dual_edges[d])] = Edge_role::dual_false_branch;
-  for(std::size_t d = 0; d < nd; ++d)
-    if(extension[d])
-    {
-      r.edge_role[ei(r.dual_edges[d])] = Edge_role::dual_leaf_extension;
-      r.leaf_extension_edges.push_back(r.dual_edges[d]);
-      ++st.number_of_leaf_extension_edges;
-    }
-  for(std::size_t d = 0; d < nd; ++d)
-    if(kept[d])
-    {
-      r.edge_role[ei(r.dual_edges[d])] = Edge_role::dual_kept;
-      r.kept_dual_edges.push_back(r.dual_edges[d]);
-    }
-  st.number_of_kept_dual_edges = nkept;
-
-  // 3a. The rungs (mesh edges crossed by kept dual edges) reduced to a
-  //     maximum-significance spanning tree (Kruskal).
-  std::vector<std::size_t> rungs;
-  for(std::size_t d = 0; d < nd; ++d) if(kept[d] || extension[d]) rungs.push_back(d);
-  std::stable_sort(rungs.begin(), rungs.end(), [&](std::size_t a, std::size_t b) {
-    return r.significance[ei(r.dual_edges[a])] > r.significance[ei(r.dual_edges[b])];
-  });
-  r.is_cut_edge.assign(ne, 0);
-  std::vector<std::size_t> cut_degree(nv, 0);
-  auto add_cut = [&](std::size_t d) {
-    const edge_descriptor e = r.dual_edges[d];
-    r.is_cut_edge[ei(e)] = 1;
-    ++cut_degree[vi(source(e, tm))];
-    ++cut_degree[vi(target(e, tm))];
-  };
-  {
-    Union_find uf(nv);
-    for(std::size_t d : rungs)
-    {
-      const edge_descriptor e = r.dual_edges[d];
-      if(uf.unite(vi(source(e, tm)), vi(target(e, tm)))) add_cut(d);
     }
   }
 
-  // 3b. Genus g: add back the 2g rungs that close the non-contractible cycles.
-  //     A rung may be added iff the faces stay connected across non-cut edges
-  //     (its dual edge is no bridge), i.e. it closes no contractible cycle. The
-  //     candidates that qualify form a cographic matroid, so greedy is optimal,
-  //     and a connected cut surface with Euler characteristic 1 is a disk.
-  if(st.genus > 0)
+  void record_dual_roles()
   {
-    std::vector<std::size_t> mark(nf, 0);
-    std::size_t stamp = 0;
-    for(std::size_t d : rungs)
-    {
-      if(st.number_of_closing_rungs == static_cast<std::size_t>(2 * st.genus)) break;
-      const edge_descriptor e = r.dual_edges[d];
-      if(r.is_cut_edge[ei(e)]) continue;
-      // Alternating BFS from both faces of e, never crossing K or e: it stops
-      // after O(smaller side) steps when e is a bridge.
-      const std::size_t ma = ++stamp, mb = ++stamp;
-      std::deque<std::size_t> qa{dual_faces_of[d][0]}, qb{dual_faces_of[d][1]};
-      mark[qa.front()] = ma;
-      mark[qb.front()] = mb;
-      bool joined = false;
-      auto step = [&](std::deque<std::size_t>& q, std::size_t mine, std::size_t other) {
-        const std::size_t f = q.front();
-        q.pop_front();
-        for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of[f], tm), tm))
-        {
-          const edge_descriptor eh = edge(h, tm);
-          if(r.is_cut_edge[ei(eh)] || eh == e) continue;
-          const std::size_t g = fi(face(opposite(h, tm), tm));
-          if(mark[g] == other) { joined = true; return; }
-          if(mark[g] != mine) { mark[g] = mine; q.push_back(g); }
-        }
-      };
-      while(!joined && !qa.empty() && !qb.empty())
+    std::vector<unsigned char> degree_with_extension(kept_degree_);
+    for(std::size_t d = 0; d < nd_; ++d)
+      if(extension_[d])
       {
-        step(qa, ma, mb);
-        if(!joined && !qb.empty()) step(qb, mb, ma);
+        ++degree_with_extension[dual_faces_of_[d][0]];
+        ++degree_with_extension[dual_faces_of_[d][1]];
       }
-      if(joined)
+    for(std::size_t f = 0; f < nf_; ++f) st_.number_of_extended_dual_leaves += (degree_with_extension[f] == 1);
+    for(std::size_t d = 0; d < nd_; ++d)
+      if(false_branch_[d]) r_.edge_role[ei(r_.dual_edges[d])] = Edge_role::dual_false_branch;
+    for(std::size_t d = 0; d < nd_; ++d)
+      if(extension_[d])
       {
-        add_cut(d);
-        ++st.number_of_closing_rungs;
+        r_.edge_role[ei(r_.dual_edges[d])] = Edge_role::dual_leaf_extension;
+        r_.leaf_extension_edges.push_back(r_.dual_edges[d]);
+        ++st_.number_of_leaf_extension_edges;
       }
-    }
-    if(st.number_of_closing_rungs != static_cast<std::size_t>(2 * st.genus))
-      throw Algorithm_error("found " + std::to_string(st.number_of_closing_rungs) +
-                            " of the " + std::to_string(2 * st.genus) +
-                            " rungs closing the non-contractible cycles");
+    for(std::size_t d = 0; d < nd_; ++d)
+      if(kept_[d])
+      {
+        r_.edge_role[ei(r_.dual_edges[d])] = Edge_role::dual_kept;
+        r_.kept_dual_edges.push_back(r_.dual_edges[d]);
+      }
+    st_.number_of_kept_dual_edges = nkept_;
   }
 
-  // 3c. No teeth: a spanning tree of the rungs keeps every zigzag tooth of the
-  //     strip as a one-edge leaf. A leaf of K is a tooth unless its dual edge is
-  //     the outermost cut rung of its branch of T* (nothing cut further out).
-  //     Removing a leaf of K keeps K connected and the cut surface a disk.
+  void add_cut(edge_descriptor e)
   {
-    std::vector<char> cut_beyond(nd, 0);
-    std::vector<char> face_has_cut_beyond(nf, 0);
-    for(std::size_t d : peel_order)
-    {
-      const std::size_t c = child_face[d];
-      const std::size_t p = across(d, c);
-      cut_beyond[d] = face_has_cut_beyond[c];
-      if(cut_beyond[d] || r.is_cut_edge[ei(r.dual_edges[d])]) face_has_cut_beyond[p] = 1;
-    }
-    for(std::size_t d = 0; d < nd; ++d)
-      if(!peeled[d]) cut_beyond[d] = 1; // a cycle of the 2-core never ends
-    std::vector<std::size_t> dual_index_of_edge(ne, none);
-    for(std::size_t d = 0; d < nd; ++d) dual_index_of_edge[ei(r.dual_edges[d])] = d;
+    r_.is_cut_edge[ei(e)] = 1;
+    ++cut_degree_[vi(source(e, tm_))];
+    ++cut_degree_[vi(target(e, tm_))];
+  }
+  void remove_cut(edge_descriptor e)
+  {
+    r_.is_cut_edge[ei(e)] = 0;
+    --cut_degree_[vi(source(e, tm_))];
+    --cut_degree_[vi(target(e, tm_))];
+  }
 
+  // The rungs (mesh edges crossed by kept dual edges) reduced to a
+  // maximum-significance spanning tree (Kruskal).
+  void span_rungs()
+  {
+    for(std::size_t d = 0; d < nd_; ++d) if(kept_[d] || extension_[d]) rungs_.push_back(d);
+    std::stable_sort(rungs_.begin(), rungs_.end(),
+                     [&](std::size_t a, std::size_t b) { return significance(a) > significance(b); });
+    r_.is_cut_edge.assign(ne_, 0);
+    cut_degree_.assign(nv_, 0);
+    Union_find uf(nv_);
+    for(std::size_t d : rungs_)
+    {
+      const edge_descriptor e = r_.dual_edges[d];
+      if(uf.unite(vi(source(e, tm_)), vi(target(e, tm_)))) add_cut(e);
+    }
+  }
+
+  // Genus g: add back the 2g rungs that close the non-contractible cycles. A
+  // rung may be added iff the faces stay connected across non-cut edges (its
+  // dual edge is no bridge), i.e. it closes no contractible cycle. The
+  // candidates that qualify form a cographic matroid, so greedy is optimal, and
+  // a connected cut surface with Euler characteristic 1 is a disk.
+  void close_handle_cycles()
+  {
+    if(st_.genus == 0) return;
+    const std::size_t wanted = static_cast<std::size_t>(2 * st_.genus);
+    face_mark_.assign(nf_, 0);
+    for(std::size_t d : rungs_)
+    {
+      if(st_.number_of_closing_rungs == wanted) break;
+      const edge_descriptor e = r_.dual_edges[d];
+      if(r_.is_cut_edge[ei(e)] || !faces_stay_connected_without(d)) continue;
+      add_cut(e);
+      ++st_.number_of_closing_rungs;
+    }
+    if(st_.number_of_closing_rungs != wanted)
+      throw Algorithm_error("found " + std::to_string(st_.number_of_closing_rungs) + " of the " +
+                            std::to_string(wanted) + " rungs closing the non-contractible cycles");
+  }
+
+  // Whether the two faces of dual edge d stay connected when K and d's edge are
+  // cut: an alternating BFS from both faces stops after O(smaller side) steps
+  // when the edge is a bridge.
+  bool faces_stay_connected_without(std::size_t d)
+  {
+    const edge_descriptor e = r_.dual_edges[d];
+    const std::size_t ma = ++stamp_, mb = ++stamp_;
+    std::deque<std::size_t> qa{dual_faces_of_[d][0]}, qb{dual_faces_of_[d][1]};
+    face_mark_[qa.front()] = ma;
+    face_mark_[qb.front()] = mb;
+    bool joined = false;
+    auto step = [&](std::deque<std::size_t>& q, std::size_t mine, std::size_t other) {
+      const std::size_t f = q.front();
+      q.pop_front();
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of_[f], tm_), tm_))
+      {
+        const edge_descriptor eh = edge(h, tm_);
+        if(r_.is_cut_edge[ei(eh)] || eh == e) continue;
+        const std::size_t g = fi(face(opposite(h, tm_), tm_));
+        if(face_mark_[g] == other) { joined = true; return; }
+        if(face_mark_[g] != mine) { face_mark_[g] = mine; q.push_back(g); }
+      }
+    };
+    while(!joined && !qa.empty() && !qb.empty())
+    {
+      step(qa, ma, mb);
+      if(!joined && !qb.empty()) step(qb, mb, ma);
+    }
+    return joined;
+  }
+
+  // No teeth: a spanning tree of the rungs keeps every zigzag tooth of the strip
+  // as a one-edge leaf. A leaf of K is a tooth unless its dual edge is the
+  // outermost cut rung of its branch of T* (nothing cut further out). Removing a
+  // leaf of K keeps K connected and the cut surface a disk.
+  void remove_teeth()
+  {
+    const std::vector<char> cut_beyond = cut_further_out();
+    std::vector<std::size_t> dual_index_of_edge(ne_, none);
+    for(std::size_t d = 0; d < nd_; ++d) dual_index_of_edge[ei(r_.dual_edges[d])] = d;
     std::size_t cut_size = 0;
-    for(std::size_t i = 0; i < ne; ++i) cut_size += r.is_cut_edge[i];
+    for(std::size_t i = 0; i < ne_; ++i) cut_size += r_.is_cut_edge[i];
     std::vector<vertex_descriptor> leaves;
-    for(vertex_descriptor v : vertices(tm))
-      if(cut_degree[vi(v)] == 1) leaves.push_back(v);
+    for(vertex_descriptor v : vertices(tm_))
+      if(cut_degree_[vi(v)] == 1) leaves.push_back(v);
     while(!leaves.empty() && cut_size > 1)
     {
       const vertex_descriptor w = leaves.back();
       leaves.pop_back();
-      if(cut_degree[vi(w)] != 1) continue;
-      halfedge_descriptor hw = GT::null_halfedge();
-      for(halfedge_descriptor h : CGAL::halfedges_around_target(w, tm))
-        if(r.is_cut_edge[ei(edge(h, tm))]) { hw = h; break; }
-      const std::size_t d = dual_index_of_edge[ei(edge(hw, tm))];
-      if(!cut_beyond[d]) continue; // the end of a branch: keep it
-      r.is_cut_edge[ei(edge(hw, tm))] = 0;
+      if(cut_degree_[vi(w)] != 1) continue;
+      const halfedge_descriptor hw = cut_halfedge_into(w, GT::null_halfedge());
+      if(!cut_beyond[dual_index_of_edge[ei(edge(hw, tm_))]]) continue; // the end of a branch: keep it
+      remove_cut(edge(hw, tm_));
       --cut_size;
-      --cut_degree[vi(w)];
-      const vertex_descriptor u = source(hw, tm);
-      if(--cut_degree[vi(u)] == 1) leaves.push_back(u);
-      ++st.number_of_teeth_pruned;
+      const vertex_descriptor u = source(hw, tm_);
+      if(cut_degree_[vi(u)] == 1) leaves.push_back(u);
+      ++st_.number_of_teeth_pruned;
     }
   }
 
-  // 3d. Leaves at corners. The cut locus ends at vertices of positive
-  //     curvature (generically every such vertex is a leaf: one shortest path
-  //     reaches it). A leaf of K one or two edges past a sharp corner (more
-  //     than 100 degrees, a doubly covered square's has 180), or a corner
-  //     (60 degrees or more) left off K, puts the slit's end beside the
-  //     ridge's end; the fronts on both sides of the corner then come out
-  //     wrong. So the leaf is moved back onto the corner, and a corner off K
-  //     joined to it. Measured (bench_ridge_accuracy): trimming at corners of
-  //     60 degrees cut real branches through the 77-90 degree ear tips of
-  //     bunny_1k (recall p95 at tolerance 0.001 0.27 -> 4.5 mean edges).
-  if(!st.fallback_single_rung && leaf_curvature > 0)
+  // per dual edge: whether K cuts further out on its branch of T* (always on the 2-core)
+  std::vector<char> cut_further_out() const
   {
-    const double degree_to_radian = 3.14159265358979323846 / 180.0;
-    const double corner = 60 * degree_to_radian, sharp_corner = 100 * degree_to_radian;
-    std::vector<char> is_seed(nv, 0);
-    for(const auto& sd : src.seeds) is_seed[vi(sd.first)] = 1;
-    if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX) is_seed[vi(src.vertex)] = 1;
-    // a cut edge at v other than `not_this`, as a halfedge pointing into v
-    auto cut_halfedge_into = [&](vertex_descriptor v, halfedge_descriptor not_this) {
-      for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm))
-        if(r.is_cut_edge[ei(edge(h, tm))] && (not_this == GT::null_halfedge() || edge(h, tm) != edge(not_this, tm)))
-          return h;
-      return GT::null_halfedge();
-    };
+    std::vector<char> cut_beyond(nd_, 0), face_has_cut_beyond(nf_, 0);
+    for(std::size_t d : peel_order_)
+    {
+      const std::size_t c = child_face_[d];
+      cut_beyond[d] = face_has_cut_beyond[c];
+      if(cut_beyond[d] || r_.is_cut_edge[ei(r_.dual_edges[d])]) face_has_cut_beyond[across(d, c)] = 1;
+    }
+    for(std::size_t d = 0; d < nd_; ++d)
+      if(!peeled_[d]) cut_beyond[d] = 1; // a cycle of the 2-core never ends
+    return cut_beyond;
+  }
+
+  // a cut edge at v other than `not_this`, as a halfedge pointing into v
+  halfedge_descriptor cut_halfedge_into(vertex_descriptor v, halfedge_descriptor not_this) const
+  {
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_))
+      if(r_.is_cut_edge[ei(edge(h, tm_))] &&
+         (not_this == GT::null_halfedge() || edge(h, tm_) != edge(not_this, tm_)))
+        return h;
+    return GT::null_halfedge();
+  }
+
+  // Leaves at corners. The cut locus ends at vertices of positive curvature
+  // (generically every such vertex is a leaf: one shortest path reaches it). A
+  // leaf of K one or two edges past a sharp corner, or a corner left off K (see
+  // `join_corners`), puts the slit's end beside the ridge's end; the fronts on
+  // both sides of the corner then come out wrong. So the leaf is moved back
+  // onto the corner. Measured (bench_ridge_accuracy): trimming at corners of 60
+  // degrees cut real branches through the 77-90 degree ear tips of bunny_1k
+  // (recall p95 at tolerance 0.001 0.27 -> 4.5 mean edges), hence the sharper
+  // threshold here.
+  static double corner_curvature() { return radians(60); }
+  // (a doubly covered square's corners have 180 degrees)
+  static double sharp_corner_curvature() { return radians(100); }
+
+  void move_leaves_onto_corners()
+  {
     std::vector<vertex_descriptor> leaves;
-    for(vertex_descriptor v : vertices(tm))
-      if(cut_degree[vi(v)] == 1 && angles.curvature(vi(v)) < corner) leaves.push_back(v);
+    for(vertex_descriptor v : vertices(tm_))
+      if(cut_degree_[vi(v)] == 1 && angles_.curvature(vi(v)) < corner_curvature()) leaves.push_back(v);
     for(vertex_descriptor w : leaves)
     {
       // past a sharp corner: walk in through at most two vertices of degree 2
@@ -716,143 +792,230 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
       for(int step = 0; step < 2 && h != GT::null_halfedge(); ++step)
       {
         path.push_back(h);
-        const vertex_descriptor u = source(h, tm);
+        const vertex_descriptor u = source(h, tm_);
         // (u keeps a cut edge, so K never becomes empty)
-        if(angles.curvature(vi(u)) >= sharp_corner && !is_seed[vi(u)] && cut_degree[vi(u)] >= 2)
+        if(angles_.curvature(vi(u)) >= sharp_corner_curvature() && !is_source_vertex(u) && cut_degree_[vi(u)] >= 2)
         {
-          for(halfedge_descriptor p : path)
-          {
-            r.is_cut_edge[ei(edge(p, tm))] = 0;
-            --cut_degree[vi(source(p, tm))];
-            --cut_degree[vi(target(p, tm))];
-          }
-          ++st.number_of_corner_moves;
+          for(halfedge_descriptor p : path) remove_cut(edge(p, tm_));
+          ++st_.number_of_corner_moves;
           break;
         }
-        if(cut_degree[vi(u)] != 2) break;
+        if(cut_degree_[vi(u)] != 2) break;
         h = cut_halfedge_into(u, h); // the other cut edge at u, again pointing outwards
       }
     }
-    // a corner off K: joined to K by the shortest path of at most three edges
-    // through vertices off K (a pendant path: K stays a tree plus its 2g rungs)
+  }
+
+  bool is_source_vertex(vertex_descriptor v) const
+  {
+    return is_seed_[vi(v)] || (src_.kind == Source::ON_VERTEX && v == src_.vertex);
+  }
+
+  // A corner (60 degrees or more of curvature) off K is joined to K by the
+  // shortest path of at most three edges through vertices off K (a pendant
+  // path: K stays a tree plus its 2g rungs); corners of most curvature first.
+  void join_corners()
+  {
     std::vector<vertex_descriptor> corners;
-    for(vertex_descriptor v : vertices(tm))
-      if(cut_degree[vi(v)] == 0 && !is_seed[vi(v)] && angles.curvature(vi(v)) >= corner) corners.push_back(v);
+    for(vertex_descriptor v : vertices(tm_))
+      if(cut_degree_[vi(v)] == 0 && !is_source_vertex(v) && angles_.curvature(vi(v)) >= corner_curvature())
+        corners.push_back(v);
     std::stable_sort(corners.begin(), corners.end(), [&](vertex_descriptor a, vertex_descriptor b) {
-      return angles.curvature(vi(a)) > angles.curvature(vi(b));
+      return angles_.curvature(vi(a)) > angles_.curvature(vi(b));
     });
-    const int maximum_hops = 3;
-    std::vector<vertex_descriptor> vertex_of(nv);
-    for(vertex_descriptor v : vertices(tm)) vertex_of[vi(v)] = v;
-    std::vector<double> reach(nv, std::numeric_limits<double>::infinity());
-    std::vector<int> hops(nv, 0);
-    std::vector<halfedge_descriptor> reached_by(nv, GT::null_halfedge());
-    std::vector<std::size_t> touched;
+    Short_path_search search(*this);
     for(vertex_descriptor c : corners)
     {
-      if(cut_degree[vi(c)] != 0) continue;
+      if(cut_degree_[vi(c)] != 0) continue;
+      const std::vector<halfedge_descriptor> path = search(c);
+      if(path.empty()) continue;
+      for(halfedge_descriptor h : path)
+      {
+        add_cut(edge(h, tm_));
+        r_.corner_path_edges.push_back(edge(h, tm_));
+      }
+      ++st_.number_of_corner_moves;
+    }
+  }
+
+  // Dijkstra from a corner over at most `maximum_hops` edges, avoiding the
+  // source, to the nearest vertex of K; the path as halfedges from K back
+  // towards the corner (empty if K is farther). Its tables are reset per search
+  // only where a search touched them.
+  struct Short_path_search
+  {
+    static constexpr int maximum_hops = 3;
+    const Rough_cut_locus_builder& b;
+    std::vector<vertex_descriptor> vertex_of;
+    std::vector<double> reach;
+    std::vector<int> hops;
+    std::vector<halfedge_descriptor> reached_by;
+    std::vector<std::size_t> touched;
+
+    explicit Short_path_search(const Rough_cut_locus_builder& builder)
+      : b(builder), vertex_of(builder.nv_), reach(builder.nv_, std::numeric_limits<double>::infinity()),
+        hops(builder.nv_, 0), reached_by(builder.nv_, GT::null_halfedge())
+    {
+      for(vertex_descriptor v : vertices(b.tm_)) vertex_of[b.vi(v)] = v;
+    }
+
+    std::vector<halfedge_descriptor> operator()(vertex_descriptor c)
+    {
       for(std::size_t t : touched) { reach[t] = std::numeric_limits<double>::infinity(); reached_by[t] = GT::null_halfedge(); }
       touched.clear();
       typedef std::pair<double, std::size_t> Entry;
       std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > queue;
-      reach[vi(c)] = 0; hops[vi(c)] = 0; touched.push_back(vi(c));
-      queue.emplace(0.0, vi(c));
+      reach[b.vi(c)] = 0; hops[b.vi(c)] = 0; touched.push_back(b.vi(c));
+      queue.emplace(0.0, b.vi(c));
       vertex_descriptor found = GT::null_vertex();
-      while(!queue.empty())
+      while(!queue.empty() && found == GT::null_vertex())
       {
         const double d = queue.top().first;
         const vertex_descriptor u = vertex_of[queue.top().second];
         queue.pop();
-        if(d > reach[vi(u)]) continue;
-        if(cut_degree[vi(u)] > 0) { found = u; break; }
-        if(hops[vi(u)] == maximum_hops) continue;
-        for(halfedge_descriptor h : CGAL::halfedges_around_target(u, tm))
+        if(d > reach[b.vi(u)]) continue;
+        if(b.cut_degree_[b.vi(u)] > 0) { found = u; break; }
+        if(hops[b.vi(u)] == maximum_hops) continue;
+        for(halfedge_descriptor h : CGAL::halfedges_around_target(u, b.tm_))
         {
-          const vertex_descriptor w = source(h, tm);
-          if(is_seed[vi(w)]) continue;
-          const double dw = d + std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, u), get(vpm, w))));
-          if(dw >= reach[vi(w)]) continue;
-          if(reach[vi(w)] == std::numeric_limits<double>::infinity()) touched.push_back(vi(w));
-          reach[vi(w)] = dw; hops[vi(w)] = hops[vi(u)] + 1; reached_by[vi(w)] = h;
-          queue.emplace(dw, vi(w));
+          const vertex_descriptor w = source(h, b.tm_);
+          if(b.is_seed_[b.vi(w)]) continue;
+          const double dw = d + distance_between(b.vpm_, u, w);
+          if(dw >= reach[b.vi(w)]) continue;
+          if(reach[b.vi(w)] == std::numeric_limits<double>::infinity()) touched.push_back(b.vi(w));
+          reach[b.vi(w)] = dw; hops[b.vi(w)] = hops[b.vi(u)] + 1; reached_by[b.vi(w)] = h;
+          queue.emplace(dw, b.vi(w));
         }
       }
-      if(found == GT::null_vertex()) continue;
-      for(vertex_descriptor u = found; u != c;)
-      {
-        const halfedge_descriptor h = reached_by[vi(u)]; // from u back towards c
-        r.is_cut_edge[ei(edge(h, tm))] = 1;
-        r.corner_path_edges.push_back(edge(h, tm));
-        ++cut_degree[vi(source(h, tm))];
-        ++cut_degree[vi(target(h, tm))];
-        u = target(h, tm);
-      }
-      ++st.number_of_corner_moves;
+      std::vector<halfedge_descriptor> path;
+      if(found == GT::null_vertex()) return path;
+      for(vertex_descriptor u = found; u != c; u = target(path.back(), b.tm_))
+        path.push_back(reached_by[b.vi(u)]); // from u back towards c
+      return path;
     }
-  }
-  for(std::size_t i = 0; i < ne; ++i)
-    if(r.is_cut_edge[i]) r.cut_edges.push_back(edge_of[i]);
-  std::sort(r.dual_edges.begin(), r.dual_edges.end(),
-            [&](edge_descriptor a, edge_descriptor b) { return ei(a) < ei(b); });
-  std::sort(r.kept_dual_edges.begin(), r.kept_dual_edges.end(),
-            [&](edge_descriptor a, edge_descriptor b) { return ei(a) < ei(b); });
-  std::sort(r.leaf_extension_edges.begin(), r.leaf_extension_edges.end(),
-            [&](edge_descriptor a, edge_descriptor b) { return ei(a) < ei(b); });
-  std::sort(r.corner_path_edges.begin(), r.corner_path_edges.end(),
-            [&](edge_descriptor a, edge_descriptor b) { return ei(a) < ei(b); });
-  st.time_cut_graph = seconds_since(t0);
+  };
 
-  // ---------------------------------------------------------------------------
-  // 4. Check, always: K is connected with cycle rank 2g, the cut surface is
-  //    connected with Euler characteristic 1 (so a disk), the source is off K.
-  t0 = std::chrono::steady_clock::now();
+  void collect_cut_edges()
   {
-    st.number_of_cut_edges = r.cut_edges.size();
-    Union_find kuf(nv);
+    for(std::size_t i = 0; i < ne_; ++i)
+      if(r_.is_cut_edge[i]) r_.cut_edges.push_back(edge_of_[i]);
+    auto by_index = [&](edge_descriptor a, edge_descriptor b) { return ei(a) < ei(b); };
+    std::sort(r_.dual_edges.begin(), r_.dual_edges.end(), by_index);
+    std::sort(r_.kept_dual_edges.begin(), r_.kept_dual_edges.end(), by_index);
+    std::sort(r_.leaf_extension_edges.begin(), r_.leaf_extension_edges.end(), by_index);
+    std::sort(r_.corner_path_edges.begin(), r_.corner_path_edges.end(), by_index);
+    st_.number_of_cut_edges = r_.cut_edges.size();
+  }
+
+  // Step 4, always: K is connected with cycle rank 2g, the cut surface is
+  // connected with Euler characteristic 1 (so a disk), the source is off K.
+  void check_disk()
+  {
     std::size_t split_vertices = 0;
-    for(vertex_descriptor v : vertices(tm))
+    for(vertex_descriptor v : vertices(tm_))
     {
-      const std::size_t k = cut_degree[vi(v)];
-      if(k > 0) ++st.number_of_cut_vertices;
-      if(k == 1) ++st.number_of_cut_leaves;
+      const std::size_t k = cut_degree_[vi(v)];
+      if(k > 0) ++st_.number_of_cut_vertices;
+      if(k == 1) ++st_.number_of_cut_leaves;
       if(k > 1) split_vertices += k - 1;
     }
-    for(edge_descriptor e : r.cut_edges) kuf.unite(vi(source(e, tm)), vi(target(e, tm)));
-    const std::size_t k_components = kuf.number_of_sets() - (nv - st.number_of_cut_vertices);
-    st.cut_cycle_rank = st.number_of_cut_edges + k_components - st.number_of_cut_vertices;
-
-    Union_find fuf(nf);
-    for(edge_descriptor e : edges(tm))
-      if(!r.is_cut_edge[ei(e)])
+    Union_find kuf(nv_);
+    for(edge_descriptor e : r_.cut_edges) kuf.unite(vi(source(e, tm_)), vi(target(e, tm_)));
+    const std::size_t k_components = kuf.number_of_sets() - (nv_ - st_.number_of_cut_vertices);
+    st_.cut_cycle_rank = st_.number_of_cut_edges + k_components - st_.number_of_cut_vertices;
+    Union_find fuf(nf_);
+    for(edge_descriptor e : edges(tm_))
+      if(!r_.is_cut_edge[ei(e)])
       {
-        const halfedge_descriptor h = halfedge(e, tm);
-        fuf.unite(fi(face(h, tm)), fi(face(opposite(h, tm), tm)));
+        const halfedge_descriptor h = halfedge(e, tm_);
+        fuf.unite(fi(face(h, tm_)), fi(face(opposite(h, tm_), tm_)));
       }
-    const long cut_chi = static_cast<long>(nv + split_vertices) -
-                         static_cast<long>(ne + st.number_of_cut_edges) + static_cast<long>(nf);
-    bool source_on_cut = false;
-    if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX)
-      source_on_cut = cut_degree[vi(src.vertex)] > 0;
-    else if(src.kind == Geodesic_source<TriangleMesh>::ON_EDGE)
-      source_on_cut = r.is_cut_edge[ei(edge(src.edge_halfedge, tm))] != 0;
+    const long cut_chi = static_cast<long>(nv_ + split_vertices) -
+                         static_cast<long>(ne_ + st_.number_of_cut_edges) + static_cast<long>(nf_);
     std::string why;
-    if(r.cut_edges.empty()) why = "the cut graph is empty";
+    if(r_.cut_edges.empty()) why = "the cut graph is empty";
     else if(k_components != 1) why = "the cut graph has " + std::to_string(k_components) + " components";
-    else if(st.cut_cycle_rank != static_cast<std::size_t>(2 * st.genus))
-      why = "the cut graph has cycle rank " + std::to_string(st.cut_cycle_rank) + ", not 2g = " +
-            std::to_string(2 * st.genus);
+    else if(st_.cut_cycle_rank != static_cast<std::size_t>(2 * st_.genus))
+      why = "the cut graph has cycle rank " + std::to_string(st_.cut_cycle_rank) + ", not 2g = " +
+            std::to_string(2 * st_.genus);
     else if(fuf.number_of_sets() != 1)
       why = "cutting along K splits the surface into " + std::to_string(fuf.number_of_sets()) + " parts";
     else if(cut_chi != 1)
       why = "the cut surface has Euler characteristic " + std::to_string(cut_chi) + ", not 1";
-    else if(source_on_cut)
+    else if(source_on_cut())
       why = "the source lies on the cut";
-    if(!why.empty())
-      throw Algorithm_error("rough cut locus: cutting along K does not give a disk: " + why);
+    if(!why.empty()) throw Algorithm_error("rough cut locus: cutting along K does not give a disk: " + why);
   }
-  st.time_disk_check = seconds_since(t0);
-  st.time_total = seconds_since(t_start);
-  return r;
+
+  bool source_on_cut() const
+  {
+    if(src_.kind == Source::ON_VERTEX) return cut_degree_[vi(src_.vertex)] > 0;
+    if(src_.kind == Source::ON_EDGE) return r_.is_cut_edge[ei(edge(src_.edge_halfedge, tm_))] != 0;
+    return false;
+  }
+
+  // the input
+  const TriangleMesh& tm_;
+  const Source src_;
+  const VertexPointMap vpm_;
+  const VertexIndexMap vim_;
+  const EdgeIndexMap eim_;
+  const FaceIndexMap fim_;
+  const Options options_;
+  const std::size_t nv_, ne_, nf_;
+  // the result, filled step by step
+  Rough_cut_locus<TriangleMesh> r_;
+  Rough_cut_locus_statistics& st_;
+  // elements by index; the seeds of the source
+  std::vector<edge_descriptor> edge_of_;
+  std::vector<face_descriptor> face_of_;
+  std::vector<char> is_seed_;
+  // step 1: edge lengths
+  std::vector<double> length_;
+  // step 2: areas, the dual graph (by position d in r_.dual_edges), curvature,
+  // and the peeling: per dual edge its child face (the side peeled first) and
+  // the curvature beyond it
+  std::vector<double> area_;
+  double node_total_ = 0;
+  std::size_t nd_ = 0;
+  std::vector<std::array<std::size_t, 2> > dual_faces_of_;
+  std::vector<std::array<std::size_t, 3> > dual_of_face_;
+  std::vector<unsigned char> dual_degree_;
+  Corner_angles angles_;
+  std::vector<double> curvature_share_, positive_share_, subtree_curvature_, subtree_positive_;
+  std::vector<char> peeled_;
+  std::vector<std::size_t> child_face_, peel_order_;
+  // step 3: the kept dual structure and its extensions; K and its vertex degrees
+  double threshold_ = 0;
+  std::vector<char> kept_, false_branch_, extension_;
+  std::size_t nkept_ = 0;
+  std::vector<unsigned char> kept_degree_;
+  std::vector<std::size_t> rungs_, cut_degree_;
+  std::vector<std::size_t> face_mark_;
+  std::size_t stamp_ = 0;
+};
+
+template <class TriangleMesh, class NamedParameters>
+Rough_cut_locus<TriangleMesh>
+rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
+                     const NamedParameters& np, const std::vector<double>* field = nullptr)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto eim = CGAL::get_initialized_edge_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  typedef Rough_cut_locus_builder<TriangleMesh, std::remove_const_t<decltype(vpm)>,
+                                  std::remove_const_t<decltype(vim)>, std::remove_const_t<decltype(eim)>,
+                                  std::remove_const_t<decltype(fim)> > Builder;
+  typename Builder::Options options;
+  options.tolerance = get_tolerance(np);
+  options.leaf_extension = get_leaf_extension(np);
+  options.leaf_curvature = radians(get_leaf_curvature(np));
+  options.branch_curvature = radians(get_branch_curvature(np));
+  return Builder(tm, src, vpm, vim, eim, fim, options).run(field);
 }
 
 } // namespace internal

@@ -8,6 +8,7 @@
 #ifndef GEODESIC_RIDGE_INTERNAL_CORNER_ANGLES_H
 #define GEODESIC_RIDGE_INTERNAL_CORNER_ANGLES_H
 
+#include <CGAL/number_type_config.h>
 #include <CGAL/number_utils.h>
 
 #include <array>
@@ -24,8 +25,10 @@ struct Corner_angles
   /// per vertex (by vertex index): the sum of its corner angles
   std::vector<double> angle_sum;
   /// 2π − angle sum at vertex v (by index): its Gaussian curvature
-  double curvature(std::size_t v) const { return 2 * 3.14159265358979323846 - angle_sum[v]; }
+  double curvature(std::size_t v) const { return 2 * CGAL_PI - angle_sum[v]; }
 };
+
+inline double radians(double degrees) { return degrees * CGAL_PI / 180; }
 
 template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
 Corner_angles corner_angles(const TriangleMesh& tm, const VertexPointMap& vpm, const VertexIndexMap& vim,
