@@ -335,29 +335,21 @@ std::vector<char> copies_near_kinks(const Extended_surface<Point>& E, const std:
                                     double angle)
 {
   typedef typename Extended_surface<Point>::Mesh Mesh;
-  typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
   const Mesh& m = E.mesh;
   auto corner_points = [&](typename Mesh::Face_index f) {
     const auto h = m.halfedge(f);
     return std::array<Point, 3>{{m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h)))}};
   };
-  auto unit = [](const Vector& v) { return v / std::sqrt(CGAL::to_double(v.squared_length())); };
   std::vector<char> bends(m.number_of_faces(), 0);
   for(auto h : m.halfedges())
   {
     const auto o = m.opposite(h);
     if(m.is_border(h) || m.is_border(o) || m.face(h) > m.face(o)) continue; // each inner edge once
     const std::size_t a = std::size_t(m.face(h)), b = std::size_t(m.face(o));
-    const auto ga = field_gradient(corner_points(m.face(h)), corners[a]);
-    const auto gb = field_gradient(corner_points(m.face(o)), corners[b]);
-    const Point& s = m.point(m.source(h));
-    const Vector t = unit(m.point(m.target(h)) - s);
-    auto inward = [&](const Point& r) { const Vector w = r - s; return unit(w - (w * t) * t); };
-    const Vector va(ga[0], ga[1], ga[2]), vb(gb[0], gb[1], gb[2]);
-    // in a's plane: (ga.t, ga.n_a) and b's gradient unfolded, (gb.t, -gb.n_b)
-    const double x1 = CGAL::to_double(va * t), y1 = CGAL::to_double(va * inward(m.point(m.target(m.next(h)))));
-    const double x2 = CGAL::to_double(vb * t), y2 = -CGAL::to_double(vb * inward(m.point(m.target(m.next(o)))));
-    if(std::atan2(std::abs(x1 * y2 - y1 * x2), x1 * x2 + y1 * y2) * 180 / CGAL_PI >= angle) bends[a] = bends[b] = 1;
+    const Gradient_jump jump = gradient_jump_across_edge(
+        m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h))), m.point(m.target(m.next(o))),
+        field_gradient(corner_points(m.face(h)), corners[a]), field_gradient(corner_points(m.face(o)), corners[b]));
+    if(jump.angle >= angle) bends[a] = bends[b] = 1;
   }
   std::vector<char> near = bends;
   for(auto f : m.faces())

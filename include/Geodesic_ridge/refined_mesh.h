@@ -133,6 +133,320 @@ inline Exact_barycentric centroid(const std::vector<Exact_barycentric>& polygon)
   return c;
 }
 
+// The ridge-refined mesh as its named steps: the exact cells of the faces
+// with several cells, then the output faces (a face copied, or split into its
+// cells, each triangulated), one distance per output vertex, and the ridge's
+// edges marked.
+template <class TriangleMesh, class Point, class MutableFaceGraph, class Field, class VertexPointMap,
+          class VertexIndexMap, class FaceIndexMap, class EdgeIndexMap, class OutputPointMap, class DistanceMap,
+          class ConstrainedMap, class Visitor>
+class Ridge_refiner
+{
+  typedef boost::graph_traits<MutableFaceGraph> OGT;
+  typedef typename OGT::vertex_descriptor out_vertex;
+  typedef typename OGT::face_descriptor out_face;
+  typedef CGAL::Gmpq Q;
+
+public:
+  Ridge_refiner(const TriangleMesh& tm, const Ridge_curve<TriangleMesh, Point>& ridge, MutableFaceGraph& out,
+                const Field& field, VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim,
+                OutputPointMap vpm_out, DistanceMap distance_out, ConstrainedMap constrained_out, Visitor visitor)
+    : tm_(tm), ridge_(ridge), out_(out), field_(field), vpm_(vpm), vim_(vim), fim_(fim), eim_(eim),
+      vpm_out_(vpm_out), distance_out_(distance_out), constrained_out_(constrained_out), visitor_(visitor),
+      faces_(tm, vpm, fim), nf_(num_faces(tm)),
+      vertex_of_mesh_vertex_(num_vertices(tm), OGT::null_vertex())
+  {}
+
+  Refined_mesh_statistics run()
+  {
+    collect_exact_cells();
+    for(std::size_t f = 0; f < nf_; ++f)
+      if(is_split(f)) split_face(f);
+      else add_triangle(f, vertex_at(f, corner(0)), vertex_at(f, corner(1)), vertex_at(f, corner(2)));
+    assign_distances();
+    mark_ridge_edges();
+    st_.vertices = num_vertices(out_);
+    st_.faces = num_faces(out_);
+    return st_;
+  }
+
+private:
+  static Exact_barycentric corner(int k)
+  {
+    Exact_barycentric l = {{Q(0), Q(0), Q(0)}};
+    l[k] = Q(1);
+    return l;
+  }
+
+  // edge k of a face runs from corner k to corner k+1; its parameter t runs
+  // from the endpoint of smaller vertex index
+  template <class Barycentric>
+  auto edge_parameter(std::size_t f, int k, const Barycentric& lambda) const
+  {
+    const auto h = faces_.corner_halfedges(f);
+    const bool forward = get(vim_, source(h[k], tm_)) < get(vim_, target(h[k], tm_));
+    return forward ? lambda[(k + 1) % 3] : lambda[k];
+  }
+  std::size_t edge_index(std::size_t f, int k) const
+  {
+    return get(eim_, edge(faces_.corner_halfedges(f)[k], tm_));
+  }
+
+  // the feature of a barycentric point: -1 interior, else the triangle edge k
+  // it lies on (one zero) or 3 + the corner (two zeros)
+  template <class Barycentric>
+  static int feature_of(const Barycentric& lambda)
+  {
+    int zeros = 0, nz = -1, z = -1;
+    for(int k = 0; k < 3; ++k) { if(lambda[k] == 0) { ++zeros; z = k; } else nz = k; }
+    if(zeros >= 2) return 3 + nz;
+    if(zeros == 1) return (z + 1) % 3; // coordinate (k+2)%3 vanishes on edge k
+    return -1;
+  }
+
+  // Exact cells of the faces with several cells, and the exact parameters of
+  // their corners inside mesh edges.
+  void collect_exact_cells()
+  {
+    polygons_.resize(nf_);
+    edge_points_.resize(num_edges(tm_));
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      if(ridge_.regions[f].size() < 2) continue;
+      polygons_[f] = exact_cells(ridge_.regions[f]);
+      for(const auto& polygon : polygons_[f])
+        for(const auto& p : polygon)
+        {
+          const int feature = feature_of(p);
+          if(feature >= 0 && feature < 3) edge_points_[edge_index(f, feature)].push_back(edge_parameter(f, feature, p));
+        }
+    }
+    for(auto& points : edge_points_)
+    {
+      std::sort(points.begin(), points.end());
+      points.erase(std::unique(points.begin(), points.end()), points.end());
+    }
+  }
+
+  bool is_split(std::size_t f) const
+  {
+    if(polygons_[f].size() > 1) return true;
+    for(int k = 0; k < 3; ++k)
+      if(!edge_points_[edge_index(f, k)].empty()) return true;
+    return false;
+  }
+
+  out_vertex new_vertex(const Point& p)
+  {
+    const out_vertex v = add_vertex(out_);
+    put(vpm_out_, v, p);
+    value_range_.emplace(v, std::make_pair(std::numeric_limits<double>::infinity(),
+                                           -std::numeric_limits<double>::infinity()));
+    return v;
+  }
+
+  // the output vertex at exact point `lambda` of face f, found by its exact
+  // key; it records the value face f gives there
+  out_vertex vertex_at(std::size_t f, const Exact_barycentric& lambda)
+  {
+    const auto h = faces_.corner_halfedges(f);
+    const int feature = feature_of(lambda);
+    out_vertex v;
+    if(feature >= 3)
+    {
+      const auto mv = source(h[feature - 3], tm_);
+      out_vertex& mapped = vertex_of_mesh_vertex_[get(vim_, mv)];
+      if(mapped == OGT::null_vertex()) mapped = new_vertex(get(vpm_, mv));
+      v = mapped;
+    }
+    else
+    {
+      Exact_point_key key;
+      Rounded_point_key rkey;
+      if(feature >= 0)
+      {
+        const std::size_t e = edge_index(f, feature);
+        const Q t = edge_parameter(f, feature, lambda);
+        key = Exact_point_key(1, e, t, Q(0));
+        rkey = Rounded_point_key(1, e, CGAL::to_double(t), 0.);
+      }
+      else
+      {
+        key = Exact_point_key(2, f, lambda[1], lambda[2]);
+        rkey = Rounded_point_key(2, f, CGAL::to_double(lambda[1]), CGAL::to_double(lambda[2]));
+      }
+      auto it = vertex_of_point_.find(key);
+      if(it == vertex_of_point_.end())
+      {
+        const auto cp = faces_.corner_points(f);
+        it = vertex_of_point_.emplace(key, new_vertex(barycentric_to_point(lambda, cp[0], cp[1], cp[2]))).first;
+        vertex_of_rounded_.emplace(rkey, it->second);
+      }
+      v = it->second;
+    }
+    const std::array<double, 3> rounded = {{CGAL::to_double(lambda[0]), CGAL::to_double(lambda[1]),
+                                            CGAL::to_double(lambda[2])}};
+    const double d = field_.distance(std::make_pair(faces_.face(f), rounded));
+    auto& r = value_range_[v];
+    r.first = (std::min)(r.first, d);
+    r.second = (std::max)(r.second, d);
+    return v;
+  }
+
+  void add_triangle(std::size_t f, out_vertex a, out_vertex b, out_vertex c)
+  {
+    const out_face created = CGAL::Euler::add_face(std::array<out_vertex, 3>{{a, b, c}}, out_);
+    if(created == OGT::null_face())
+      throw Algorithm_error("the refined mesh could not be assembled at face " + std::to_string(f));
+    visitor_.face_created(faces_.face(f), created);
+  }
+
+  // every point of face f that a side may hold: cell corners and the points of
+  // both faces' cells on its edges
+  std::vector<Exact_barycentric> points_of_face(std::size_t f) const
+  {
+    std::vector<Exact_barycentric> points;
+    for(const auto& polygon : polygons_[f]) points.insert(points.end(), polygon.begin(), polygon.end());
+    const auto h = faces_.corner_halfedges(f);
+    for(int k = 0; k < 3; ++k)
+    {
+      const bool forward = get(vim_, source(h[k], tm_)) < get(vim_, target(h[k], tm_));
+      for(const Q& t : edge_points_[edge_index(f, k)])
+      {
+        Exact_barycentric l = {{Q(0), Q(0), Q(0)}};
+        l[(k + 1) % 3] = forward ? t : Q(1) - t;
+        l[k] = Q(1) - l[(k + 1) % 3];
+        points.push_back(l);
+      }
+    }
+    return points;
+  }
+
+  // f into its cells (a face with one cell but points on its edges is one cell)
+  void split_face(std::size_t f)
+  {
+    ++st_.split_faces;
+    if(polygons_[f].empty()) polygons_[f].push_back({corner(0), corner(1), corner(2)});
+    const std::vector<Exact_barycentric> points = points_of_face(f);
+    for(const auto& polygon : polygons_[f]) triangulate_cell(f, polygon, points);
+  }
+
+  // a cell's boundary with the points inside its sides, triangulated
+  void triangulate_cell(std::size_t f, const std::vector<Exact_barycentric>& polygon,
+                        const std::vector<Exact_barycentric>& points)
+  {
+    std::vector<out_vertex> loop;
+    for(std::size_t i = 0; i < polygon.size(); ++i)
+    {
+      const Exact_barycentric& a = polygon[i];
+      const Exact_barycentric& b = polygon[(i + 1) % polygon.size()];
+      const auto inside = points_inside_side(a, b, points);
+      loop.push_back(vertex_at(f, a));
+      if(inside.empty()) continue;
+      // the side's chain, kept so the ridge can be found along it
+      std::vector<out_vertex> chain{loop.back()};
+      for(const Exact_barycentric* p : inside)
+      {
+        loop.push_back(vertex_at(f, *p));
+        chain.push_back(loop.back());
+      }
+      chain.push_back(vertex_at(f, b));
+      if(chain.front() > chain.back()) std::reverse(chain.begin(), chain.end());
+      chain_of_side_[std::make_pair(chain.front(), chain.back())] = chain;
+    }
+    const std::size_t n = loop.size();
+    if(n == polygon.size())
+    {
+      // a convex polygon with true corners only: a fan
+      for(std::size_t i = 1; i + 1 < n; ++i) add_triangle(f, loop[0], loop[i], loop[i + 1]);
+      return;
+    }
+    // points inside sides: a star from the centre, so no triangle is flat
+    const out_vertex c = vertex_at(f, centroid(polygon));
+    ++st_.centre_vertices;
+    for(std::size_t i = 0; i < n; ++i) add_triangle(f, c, loop[i], loop[(i + 1) % n]);
+  }
+
+  // one distance per vertex: the smallest of the faces' values
+  void assign_distances()
+  {
+    for(out_vertex v : vertices(out_))
+    {
+      const auto& r = value_range_[v];
+      put(distance_out_, v, r.first);
+      st_.largest_disagreement = (std::max)(st_.largest_disagreement, r.second - r.first);
+    }
+  }
+
+  // the output vertex at a ridge point (rounded coordinates), if any
+  out_vertex rounded_vertex(const Ridge_point<Point>& p) const
+  {
+    const auto& l = p.barycentric;
+    const int feature = feature_of(l);
+    const auto h = faces_.corner_halfedges(p.face);
+    if(feature >= 3) return vertex_of_mesh_vertex_[get(vim_, source(h[feature - 3], tm_))];
+    const Rounded_point_key key = feature >= 0
+        ? Rounded_point_key(1, edge_index(p.face, feature), edge_parameter(p.face, feature, l), 0.)
+        : Rounded_point_key(2, p.face, l[1], l[2]);
+    const auto it = vertex_of_rounded_.find(key);
+    return it == vertex_of_rounded_.end() ? OGT::null_vertex() : it->second;
+  }
+
+  bool mark(out_vertex a, out_vertex b)
+  {
+    const auto hb = halfedge(a, b, out_);
+    if(!hb.second) return false;
+    if(!get(constrained_out_, edge(hb.first, out_))) ++st_.ridge_edges;
+    put(constrained_out_, edge(hb.first, out_), true);
+    return true;
+  }
+
+  // The reported ridge as constrained edges: each segment is an output edge,
+  // or a side's chain of them.
+  void mark_ridge_edges()
+  {
+    for(auto e : edges(out_)) put(constrained_out_, e, false);
+    for(const auto& polyline : ridge_.polylines)
+      for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
+      {
+        const out_vertex a = rounded_vertex(polyline[i]), b = rounded_vertex(polyline[i + 1]);
+        bool found = a != OGT::null_vertex() && b != OGT::null_vertex();
+        if(found && a == b) continue; // a segment shorter than the rounding: nothing to mark
+        if(found && !mark(a, b))
+        {
+          const auto it = chain_of_side_.find(a < b ? std::make_pair(a, b) : std::make_pair(b, a));
+          found = it != chain_of_side_.end();
+          if(found)
+            for(std::size_t j = 0; j + 1 < it->second.size(); ++j) found = mark(it->second[j], it->second[j + 1]) && found;
+        }
+        if(!found) ++st_.unmatched_ridge_segments;
+      }
+  }
+
+  const TriangleMesh& tm_;
+  const Ridge_curve<TriangleMesh, Point>& ridge_;
+  MutableFaceGraph& out_;
+  const Field& field_;
+  const VertexPointMap vpm_;
+  const VertexIndexMap vim_;
+  const FaceIndexMap fim_;
+  const EdgeIndexMap eim_;
+  OutputPointMap vpm_out_;
+  DistanceMap distance_out_;
+  ConstrainedMap constrained_out_;
+  Visitor visitor_;
+  const Faces_by_index<TriangleMesh, VertexPointMap> faces_;
+  const std::size_t nf_;
+  Refined_mesh_statistics st_;
+  std::vector<std::vector<std::vector<Exact_barycentric> > > polygons_; // per face with several cells
+  std::vector<std::vector<Q> > edge_points_; // per edge: exact t of cell corners inside it
+  std::vector<out_vertex> vertex_of_mesh_vertex_;
+  std::map<Exact_point_key, out_vertex> vertex_of_point_;
+  std::map<Rounded_point_key, out_vertex> vertex_of_rounded_; // to find the ridge's points
+  std::map<out_vertex, std::pair<double, double> > value_range_; // smallest and largest value given
+  std::map<std::pair<out_vertex, out_vertex>, std::vector<out_vertex> > chain_of_side_; // sides that got points
+};
+
 } // namespace internal
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -168,263 +482,25 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef boost::graph_traits<MutableFaceGraph> OGT;
-  typedef typename OGT::vertex_descriptor out_vertex;
-  typedef typename OGT::face_descriptor out_face;
-  typedef CGAL::Gmpq Q;
-  typedef internal::Exact_barycentric Exact_barycentric;
-
-  const auto vpm = CGAL::get_const_property_map(CGAL::vertex_point, tm);
-  const auto vpm_in = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point), vpm);
+  const auto vpm_in = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point),
+                                       CGAL::get_const_property_map(CGAL::vertex_point, tm));
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np_in);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np_in);
   const auto eim = CGAL::get_initialized_edge_index_map(tm, np_in);
   const auto vpm_out = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
                                         get_property_map(CGAL::vertex_point, out));
-  auto distance_out = choose_parameter(get_parameter(np_out, internal_np::vertex_distance_map_t()),
-                                       CGAL::Constant_property_map<out_vertex, double>(0));
-  auto constrained_out = choose_parameter(get_parameter(np_out, CGAL::internal_np::edge_is_constrained),
-                                          CGAL::Constant_property_map<typename OGT::edge_descriptor, bool>(false));
-  auto visitor = choose_parameter(get_parameter(np_out, CGAL::internal_np::visitor), Default_refinement_visitor());
+  const auto distance_out = choose_parameter(get_parameter(np_out, internal_np::vertex_distance_map_t()),
+                                             CGAL::Constant_property_map<typename OGT::vertex_descriptor, double>(0));
+  const auto constrained_out = choose_parameter(get_parameter(np_out, CGAL::internal_np::edge_is_constrained),
+                                                CGAL::Constant_property_map<typename OGT::edge_descriptor, bool>(false));
+  const auto visitor = choose_parameter(get_parameter(np_out, CGAL::internal_np::visitor), Default_refinement_visitor());
 
-  const std::size_t nf = num_faces(tm), nv = num_vertices(tm), ne = num_edges(tm);
-  if(ridge.regions.size() != nf || ridge.vertex_distances.size() != nv)
+  if(ridge.regions.size() != num_faces(tm) || ridge.vertex_distances.size() != num_vertices(tm))
     throw Invalid_parameter_error("the ridge curve was not computed on this mesh");
   if(num_vertices(out) != 0 || num_faces(out) != 0) throw Invalid_parameter_error("the output mesh must be empty");
   const auto field = make_distance_field(tm, ridge, np_in);
-  Refined_mesh_statistics st;
-
-  const internal::Faces_by_index<TriangleMesh, std::decay_t<decltype(vpm_in)> > faces_by_index(tm, vpm_in, fim);
-  auto face_of = [&](std::size_t f) { return faces_by_index.face(f); };
-  auto corner_halfedges = [&](std::size_t f) { return faces_by_index.corner_halfedges(f); };
-  auto corner_points = [&](std::size_t f) { return faces_by_index.corner_points(f); };
-  // edge k of a face runs from corner k to corner k+1; its parameter t runs
-  // from the endpoint of smaller vertex index
-  auto edge_parameter = [&](std::size_t f, int k, const auto& lambda) {
-    const auto h = corner_halfedges(f);
-    const bool forward = get(vim, source(h[k], tm)) < get(vim, target(h[k], tm));
-    return forward ? lambda[(k + 1) % 3] : lambda[k];
-  };
-  // the feature of a barycentric point: -1 interior, else the triangle edge k
-  // it lies on (one zero) or 3 + the corner (two zeros)
-  auto feature_of = [](const auto& lambda) {
-    int zeros = 0, nz = -1, z = -1;
-    for(int k = 0; k < 3; ++k) { if(lambda[k] == 0) { ++zeros; z = k; } else nz = k; }
-    if(zeros >= 2) return 3 + nz;
-    if(zeros == 1) return (z + 1) % 3; // coordinate (k+2)%3 vanishes on edge k
-    return -1;
-  };
-
-  // ---- exact cells of the faces with several cells
-  std::vector<std::vector<std::vector<Exact_barycentric> > > polygons(nf);
-  std::vector<std::vector<Q> > edge_points(ne); // exact t of cell corners inside mesh edges
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    const auto& cells = ridge.regions[f];
-    if(cells.size() < 2) continue;
-    polygons[f] = internal::exact_cells(cells);
-    const auto h = corner_halfedges(f);
-    for(const auto& polygon : polygons[f])
-    {
-      for(const auto& p : polygon)
-      {
-        const int feature = feature_of(p);
-        if(feature >= 0 && feature < 3)
-          edge_points[get(eim, edge(h[feature], tm))].push_back(edge_parameter(f, feature, p));
-      }
-    }
-  }
-  for(auto& points : edge_points)
-  {
-    std::sort(points.begin(), points.end());
-    points.erase(std::unique(points.begin(), points.end()), points.end());
-  }
-
-  // ---- output vertices, found by their exact key; values from every face
-  //      that holds them (the smallest wins)
-  std::vector<out_vertex> vertex_of_mesh_vertex(nv, OGT::null_vertex());
-  std::map<internal::Exact_point_key, out_vertex> vertex_of_point;
-  std::map<internal::Rounded_point_key, out_vertex> vertex_of_rounded; // to find the ridge's points
-  std::map<out_vertex, std::pair<double, double> > value_range; // smallest and largest value given
-  auto new_vertex = [&](const Point& p) {
-    const out_vertex v = add_vertex(out);
-    put(vpm_out, v, p);
-    value_range.emplace(v, std::make_pair(std::numeric_limits<double>::infinity(),
-                                          -std::numeric_limits<double>::infinity()));
-    return v;
-  };
-  auto record_value = [&](out_vertex v, std::size_t f, const std::array<double, 3>& lambda) {
-    const double d = field.distance(std::make_pair(face_of(f), lambda));
-    auto& r = value_range[v];
-    r.first = (std::min)(r.first, d);
-    r.second = (std::max)(r.second, d);
-  };
-  auto rounded = [](const Exact_barycentric& l) {
-    return std::array<double, 3>{{CGAL::to_double(l[0]), CGAL::to_double(l[1]), CGAL::to_double(l[2])}};
-  };
-  // the output vertex at exact point `lambda` of face f
-  auto vertex_at = [&](std::size_t f, const Exact_barycentric& lambda) {
-    const auto h = corner_halfedges(f);
-    const int feature = feature_of(lambda);
-    out_vertex v;
-    if(feature >= 3)
-    {
-      const auto mv = source(h[feature - 3], tm);
-      const std::size_t i = get(vim, mv);
-      if(vertex_of_mesh_vertex[i] == OGT::null_vertex()) vertex_of_mesh_vertex[i] = new_vertex(get(vpm_in, mv));
-      v = vertex_of_mesh_vertex[i];
-    }
-    else
-    {
-      internal::Exact_point_key key;
-      internal::Rounded_point_key rkey;
-      if(feature >= 0)
-      {
-        const std::size_t e = get(eim, edge(h[feature], tm));
-        const Q t = edge_parameter(f, feature, lambda);
-        key = internal::Exact_point_key(1, e, t, Q(0));
-        rkey = internal::Rounded_point_key(1, e, CGAL::to_double(t), 0.);
-      }
-      else
-      {
-        key = internal::Exact_point_key(2, f, lambda[1], lambda[2]);
-        rkey = internal::Rounded_point_key(2, f, CGAL::to_double(lambda[1]), CGAL::to_double(lambda[2]));
-      }
-      auto it = vertex_of_point.find(key);
-      if(it == vertex_of_point.end())
-      {
-        const auto cp = corner_points(f);
-        it = vertex_of_point.emplace(key, new_vertex(barycentric_to_point(lambda, cp[0], cp[1], cp[2]))).first;
-        vertex_of_rounded.emplace(rkey, it->second);
-      }
-      v = it->second;
-    }
-    record_value(v, f, rounded(lambda));
-    return v;
-  };
-
-  // ---- faces
-  std::map<std::pair<out_vertex, out_vertex>, std::vector<out_vertex> > chain_of_side; // sides that got points
-  auto add_triangle = [&](std::size_t f, out_vertex a, out_vertex b, out_vertex c) {
-    const out_face nfce = CGAL::Euler::add_face(std::array<out_vertex, 3>{{a, b, c}}, out);
-    if(nfce == OGT::null_face())
-      throw Algorithm_error("the refined mesh could not be assembled at face " + std::to_string(f));
-    visitor.face_created(face_of(f), nfce);
-  };
-  const Exact_barycentric corner[3] = {{{Q(1), Q(0), Q(0)}}, {{Q(0), Q(1), Q(0)}}, {{Q(0), Q(0), Q(1)}}};
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    const auto h = corner_halfedges(f);
-    bool split = polygons[f].size() > 1;
-    for(int k = 0; k < 3 && !split; ++k) split = !edge_points[get(eim, edge(h[k], tm))].empty();
-    if(!split)
-    {
-      add_triangle(f, vertex_at(f, corner[0]), vertex_at(f, corner[1]), vertex_at(f, corner[2]));
-      continue;
-    }
-    ++st.split_faces;
-    if(polygons[f].empty()) polygons[f].push_back({corner[0], corner[1], corner[2]});
-    // every point of the face that a side may hold: cell corners and the
-    // points of both faces' cells on its edges
-    std::vector<Exact_barycentric> points;
-    for(const auto& polygon : polygons[f]) points.insert(points.end(), polygon.begin(), polygon.end());
-    for(int k = 0; k < 3; ++k)
-    {
-      const bool forward = get(vim, source(h[k], tm)) < get(vim, target(h[k], tm));
-      for(const Q& t : edge_points[get(eim, edge(h[k], tm))])
-      {
-        Exact_barycentric l = {{Q(0), Q(0), Q(0)}};
-        l[(k + 1) % 3] = forward ? t : Q(1) - t;
-        l[k] = Q(1) - l[(k + 1) % 3];
-        points.push_back(l);
-      }
-    }
-    for(const auto& polygon : polygons[f])
-    {
-      // the cell's boundary with the points inside its sides
-      std::vector<out_vertex> loop_vertices;
-      for(std::size_t i = 0; i < polygon.size(); ++i)
-      {
-        const Exact_barycentric& a = polygon[i];
-        const Exact_barycentric& b = polygon[(i + 1) % polygon.size()];
-        const auto inside = internal::points_inside_side(a, b, points);
-        loop_vertices.push_back(vertex_at(f, a));
-        if(!inside.empty())
-        {
-          std::vector<out_vertex> chain{loop_vertices.back()};
-          for(const Exact_barycentric* p : inside)
-          {
-            loop_vertices.push_back(vertex_at(f, *p));
-            chain.push_back(loop_vertices.back());
-          }
-          const out_vertex vb = vertex_at(f, b);
-          chain.push_back(vb);
-          if(chain.front() > vb) std::reverse(chain.begin(), chain.end());
-          chain_of_side[std::make_pair(chain.front(), chain.back())] = chain;
-        }
-      }
-      const std::size_t n = loop_vertices.size();
-      if(n == polygon.size())
-      {
-        // a convex polygon with true corners only: a fan
-        for(std::size_t i = 1; i + 1 < n; ++i) add_triangle(f, loop_vertices[0], loop_vertices[i], loop_vertices[i + 1]);
-      }
-      else
-      {
-        // points inside sides: a star from the centre, so no triangle is flat
-        const out_vertex c = vertex_at(f, internal::centroid(polygon));
-        ++st.centre_vertices;
-        for(std::size_t i = 0; i < n; ++i) add_triangle(f, c, loop_vertices[i], loop_vertices[(i + 1) % n]);
-      }
-    }
-  }
-
-  // ---- one distance per vertex: the smallest of the faces' values
-  for(out_vertex v : vertices(out))
-  {
-    const auto& r = value_range[v];
-    put(distance_out, v, r.first);
-    st.largest_disagreement = (std::max)(st.largest_disagreement, r.second - r.first);
-  }
-
-  // ---- the reported ridge as constrained edges
-  for(auto e : edges(out)) put(constrained_out, e, false);
-  auto rounded_vertex = [&](const Ridge_point<Point>& p) -> out_vertex {
-    const auto& l = p.barycentric;
-    const int feature = feature_of(l);
-    const auto h = corner_halfedges(p.face);
-    if(feature >= 3) return vertex_of_mesh_vertex[get(vim, source(h[feature - 3], tm))];
-    internal::Rounded_point_key key =
-        feature >= 0 ? internal::Rounded_point_key(1, get(eim, edge(h[feature], tm)),
-                                                    edge_parameter(p.face, feature, l), 0.)
-                     : internal::Rounded_point_key(2, p.face, l[1], l[2]);
-    const auto it = vertex_of_rounded.find(key);
-    return it == vertex_of_rounded.end() ? OGT::null_vertex() : it->second;
-  };
-  auto mark = [&](out_vertex a, out_vertex b) {
-    const auto hb = halfedge(a, b, out);
-    if(!hb.second) return false;
-    if(!get(constrained_out, edge(hb.first, out))) ++st.ridge_edges;
-    put(constrained_out, edge(hb.first, out), true);
-    return true;
-  };
-  for(const auto& polyline : ridge.polylines)
-    for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
-    {
-      const out_vertex a = rounded_vertex(polyline[i]), b = rounded_vertex(polyline[i + 1]);
-      bool found = a != OGT::null_vertex() && b != OGT::null_vertex();
-      if(found && a == b) continue; // a segment shorter than the rounding: nothing to mark
-      if(found && !mark(a, b))
-      {
-        const auto it = chain_of_side.find(a < b ? std::make_pair(a, b) : std::make_pair(b, a));
-        found = it != chain_of_side.end();
-        if(found)
-          for(std::size_t j = 0; j + 1 < it->second.size(); ++j) found = mark(it->second[j], it->second[j + 1]) && found;
-      }
-      if(!found) ++st.unmatched_ridge_segments;
-    }
-  st.vertices = num_vertices(out);
-  st.faces = num_faces(out);
-  return st;
+  return internal::Ridge_refiner(tm, ridge, out, field, vpm_in, vim, fim, eim, vpm_out, distance_out, constrained_out,
+                                 visitor).run();
 }
 
 } // namespace Geodesic_ridge
