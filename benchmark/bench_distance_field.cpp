@@ -3,7 +3,8 @@
 //
 // Question: how exact is the region-wise distance field at surface points,
 // against linear interpolation of exact vertex distances? The paper's Table 1
-// (DESIGN.md §6), reproduced with both solvers, and the query throughput.
+// (user manual, "The Distance Field: Table 1 of the Paper, Reproduced"),
+// reproduced with both solvers, and the query throughput.
 //
 //   bench_distance_field [--max-faces N] [--sources-per-mesh N] [--points N] [--seed S]
 //                        [--tolerance T] [MESH ...]

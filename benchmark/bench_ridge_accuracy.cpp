@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Question: how close is the computed ridge to the exact one, over many
-// sources, with each solver (DESIGN.md §6)? And, with --diagnose: does the
-// extended surface hold every shortest path?
+// sources, with each solver (user manual, "How Accuracy Is Measured")? And,
+// with --diagnose: does the extended surface hold every shortest path?
 //
 //   bench_ridge_accuracy [--max-faces N] [--tolerance T] [--recall-tolerance T]
 //                        [--sources-per-mesh N] [--random-sources R] [--seed S]

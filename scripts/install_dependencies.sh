@@ -2,8 +2,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the Debian packages Geodesic_ridge needs, when run as root; otherwise
 # prints the one apt-get line to run. Exit status 0 iff everything is there.
+#   --doc   also the packages that build the manual (scripts/build_manual.sh)
 set -euo pipefail
 packages=(g++ make cmake libcgal-dev libboost-graph-dev libgmp-dev libmpfr-dev catch2 libeigen3-dev ccache)
+if [ "${1:-}" = "--doc" ]; then packages+=(doxygen graphviz); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

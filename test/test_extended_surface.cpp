@@ -1,8 +1,9 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Stage 2a (extended surface) and the exact solver: the invariants of
-// DESIGN.md §3, checked directly on meshes of genus 0 to 3.
+// Stage 2a (extended surface) and the exact solver: the invariants of the
+// extended surface (user manual, "The Extended Surface"), checked directly on
+// meshes of genus 0 to 3.
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/extended_surface.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>

@@ -1,9 +1,10 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The measure of correctness of DESIGN.md §6: the computed ridge against the
-// exact reference ridge built from CGAL Surface_mesh_shortest_path arrival
-// directions (test/support/reference_ridge.h). Distances in mean edge lengths.
+// The measure of correctness (user manual, "How Accuracy Is Measured"): the
+// computed ridge against the exact reference ridge built from CGAL
+// Surface_mesh_shortest_path arrival directions (test/support/reference_ridge.h).
+// Distances in mean edge lengths.
 #include "support/extension_checks.h"
 #include "support/reference_ridge.h"
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The ridge curve (stage 3, and the whole pipeline) against analytic oracles
-// (DESIGN.md §6):
+// (user manual, "Analytic Cases"):
 //  * doubly covered square: the cut locus of a source on the top sheet is the
 //    Voronoi diagram of the source's four mirror images, on the bottom sheet;
 //  * convex polyhedra (subdivided box, tetrahedron, octahedron; perturbed in

@@ -45,20 +45,31 @@ struct cone_ridge_tolerance_t {};
 /// \ingroup PkgGeodesicRidgeRef
 /// The distance field inside a face copy: the linear interpolation of its
 /// corner distances (the paper's), or the cone of the exact solver's window at
-/// its centroid (`Face_cone`; exact solver only).
+/// the sample point of the copy nearest to the query (`Face_cone`; exact
+/// solver only). See the user manual, \ref GeodesicRidgeSecCone.
 enum class Field { linear, cone };
+/// \var Field::linear
+/// the linear interpolation of the corner distances of every copy
+/// \var Field::cone
+/// the exact solver's cones of every copy
 
+
+/// \ingroup PkgGeodesicRidgeNamedParameters
 /// Default of `parameters::cone_ridge_tolerance` (mean edge lengths): a
 /// thousandth of an edge, far below the ridge's own uncertainty where the
 /// cones are not exact (faces that several windows share), and reached with
 /// few points (the curve bends little inside one face).
 constexpr double default_cone_ridge_tolerance = 1e-3;
 
+/// \ingroup PkgGeodesicRidgeNamedParameters
 /// Default of `parameters::maximum_rings`.
 constexpr int default_maximum_rings = 256;
+/// \ingroup PkgGeodesicRidgeNamedParameters
 /// Default of `parameters::maximum_solves`.
 constexpr int default_maximum_solves = 3;
-/// Default of `parameters::kink_angle` (degrees): the reference's threshold of a major ridge.
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// Default of `parameters::kink_angle` (degrees): the accuracy benchmark's
+/// threshold of a major ridge (\ref GeodesicRidgeSecAccuracyMethod).
 constexpr double default_kink_angle = 60;
 
 namespace parameters {
@@ -70,6 +81,8 @@ CGAL::Named_function_parameters<Solver, internal_np::solver_t> solver(const Solv
 {
   return CGAL::Named_function_parameters<Solver, internal_np::solver_t>(s);
 }
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// Same, added to the named parameters `np`.
 template <class Solver, class NamedParameters>
 CGAL::Named_function_parameters<Solver, internal_np::solver_t, NamedParameters>
 solver(const Solver& s, const NamedParameters& np)
@@ -125,8 +138,8 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, minimum_spur_angle)
 /// the cut graph lacks a branch, both fronts reach its faces inside one sheet.
 /// With the exact solver, a copy whose corners are reached by fronts (cones of
 /// the solver) that arrive this far apart is also split into one copy per
-/// front, and the split goes on into the copies glued to it
-/// (`internal::Kink_splitter`; counted in `Ridge_curve_statistics::split_copies`).
+/// front, and the split goes on into the copies glued to it (counted in
+/// `Ridge_curve_statistics::split_copies`; user manual, \ref GeodesicRidgeSecStage3).
 /// 0 keeps the sheet-only definition (ridges between sheets only).
 GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle)
 /// \ingroup PkgGeodesicRidgeNamedParameters
@@ -147,20 +160,32 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, cone_ridge_tolerance)
 /// Counts and timings of the whole pipeline (seconds).
 struct Geodesic_ridge_statistics
 {
+  /// the solver's name (`GeodesicSolver::name()`)
   std::string solver;
+  /// the tolerance of stage 1
   double tolerance = 0;
   int solves = 0;                 ///< solves of the solver on the extended surface
   int predicted_passes = 0;       ///< fast-marching passes on E that decided the extension steps
   std::size_t outer_copies_winning = 0; ///< at the last solve: copies still winning on a border edge of E (0: E holds every shortest path)
   bool ring_cap_hit = false;      ///< the growth stopped at `maximum_rings` with copies still winning
+  /// stage 1
   Rough_cut_locus_statistics rough_cut_locus;
+  /// the extended surface of the last solve
   Extended_surface_statistics extended_surface;
+  /// stage 3
   Ridge_curve_statistics ridge;
   Cone_ridge_statistics cone_ridge; ///< with `field(Field::cone)`
   bool tree_from_solver = false; ///< the tree followed the solver's distances on M (else fast marching)
   double time_solve_on_mesh = 0; ///< the distances on M that shape the tree of stage 1
+  /// \name Timings
+  //@{
+  /// Seconds spent in stage 1, growing and materializing the extended surface,
+  /// solving on it, finding the undominated copies and the copies still
+  /// winning on its border, the lower envelopes and the ridge curve (stages 2c
+  /// and 3), and in total.
   double time_rough_cut_locus = 0, time_extension = 0, time_solve = 0, time_envelope = 0,
          time_assembly = 0, time_total = 0;
+  //@}
 };
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -185,7 +210,9 @@ struct Ridge_curve
   /// from `polylines` (same topology, same ends but the junctions inside faces;
   /// every chord within `cone_ridge_tolerance` of the curve); empty otherwise
   std::vector<std::vector<Ridge_point<Point_3> > > cone_polylines;
+  /// the result of stage 1 (the cut graph K, its tree and its statistics)
   Rough_cut_locus<TriangleMesh> rough_cut_locus;
+  /// counts and timings of every stage
   Geodesic_ridge_statistics statistics;
 };
 
@@ -433,7 +460,7 @@ void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_sou
     return keep;
   };
   const Faces_across across = faces_across(tm, fim);
-  // The growth rule (doc/manual.md, "The growth rule"): E grows a band of
+  // The growth rule (user manual, "The Solve and the Growth Rule"): E grows a band of
   // rings around every copy that still comes lowest somewhere on one of its
   // border edges, until none does. A shortest path that leaves E crosses E's
   // border where its front is exact, so no copy is lower there: without such
@@ -700,23 +727,150 @@ auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 } // namespace internal
 
 /// \ingroup PkgGeodesicRidgeRef
-/// Computes the geodesic ridge of `source` (a vertex, or a `Face_location`
-/// `std::pair<face_descriptor, std::array<FT,3>>`) on the closed triangle mesh
-/// `tm`, and keeps everything computed on the way.
+/// \brief computes the geodesic ridge of the vertex `source` on the closed
+/// triangle mesh `tm`, and returns a `Ridge_curve<TriangleMesh, Point_3>`
+/// (`Point_3` the value type of the vertex point map) with everything
+/// computed on the way.
 ///
-/// \param np named parameters: `Geodesic_ridge::parameters::tolerance(t)`,
-///   `solver(s)` (a `GeodesicSolver`, default `Exact_solver`), `initial_rings(k)`
-///   (default 3), `extension_step(k)` (default 4), `maximum_rings(k)` (default 256),
-///   `maximum_solves(k)` (default 3), `predicted_extension(b)` (default true),
-///   `tree_from_solver(b)` (default false), `minimum_spur_angle(deg)` (default 15),
-///   `kink_angle(deg)` (default 60),
-///   the experimental `guided_extension(b)` and `leaf_extension(f)`, then CGAL's `vertex_point_map`,
-///   `vertex_index_map`, `face_index_map`, `edge_index_map`.
+/// Runs the three stages of the user manual (\ref Chapter_GeodesicRidge):
+/// the rough cut locus, the extended surface grown by the growth rule and
+/// solved on, then the exact lower envelope of every face and the ridge curve.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` (`CGAL::Surface_mesh`, for example)
+/// \tparam NamedParameters a sequence of named parameters
+///         (\ref GeodesicRidgeSecParameters)
+///
+/// \param tm the mesh
+/// \param source the source: a vertex of `tm`, or (second overload) a surface
+///        point of `tm` as a `Face_location`, a face and its barycentric
+///        coordinates in the order `source(halfedge(f))`,
+///        `target(halfedge(f))`, `target(next(halfedge(f)))`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \pre `tm` is a closed, connected, manifold, consistently oriented triangle
+///      mesh with finite coordinates, no isolated vertex, no duplicate face and
+///      no zero-area face (checked first by `validate_triangle_mesh()`:
+///      `Invalid_mesh_error` otherwise).
+/// \pre `source` is a vertex of `tm`, or a face of `tm` with finite,
+///      non-negative barycentric coordinates that sum to 1 within 1e-9
+///      (`Invalid_source_error` otherwise).
+/// \pre Every named parameter is in its range, and `field(Field::cone)` comes
+///      with the exact solver (`Invalid_parameter_error` otherwise, thrown
+///      before any work).
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{tolerance}
+///     \cgalParamDescription{stage 1 keeps the dual edges whose significance is at least this fraction of the total area}
+///     \cgalParamType{`double`, in [0, 0.5)}
+///     \cgalParamDefault{`default_tolerance` (0.025)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{branch_curvature}
+///     \cgalParamDescription{degrees: kept branches of the dual tree that enclose less Gaussian curvature are false and pruned back; 0 is the paper's pruning}
+///     \cgalParamType{`double`, in [0, 720]}
+///     \cgalParamDefault{`default_branch_curvature` (15)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{leaf_curvature}
+///     \cgalParamDescription{degrees: pruned branches that hold this much Gaussian curvature are kept, so that the cut graph reaches the tips of the ridge; 0 turns it off}
+///     \cgalParamType{`double`, in [0, 720]}
+///     \cgalParamDefault{`default_leaf_curvature` (45)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{leaf_extension}
+///     \cgalParamDescription{with `leaf_curvature(0)`: leaves of the kept structure go on along their most significant pruned branch while it holds this fraction of the tolerance}
+///     \cgalParamType{`double`, in [0, 1]}
+///     \cgalParamDefault{`default_leaf_extension` (1: no extension)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{solver}
+///     \cgalParamDescription{the geodesic solver run on the extended surface}
+///     \cgalParamType{a model of `GeodesicSolver`}
+///     \cgalParamDefault{`Exact_solver()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{tree_from_solver}
+///     \cgalParamDescription{the shortest-path tree of stage 1 follows the solver's distances on `tm` (one more solve) instead of fast marching; implied by `guided_extension(true)`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{initial_rings}
+///     \cgalParamDescription{extension rings grown everywhere before the first pass}
+///     \cgalParamType{`int`, at least 0 and at most `maximum_rings`}
+///     \cgalParamDefault{3}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{extension_step}
+///     \cgalParamDescription{rings grown after a pass around the copies that still win on a border edge of the extended surface (or half the depth reached, if more)}
+///     \cgalParamType{`int`, at least 1}
+///     \cgalParamDefault{4}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_rings}
+///     \cgalParamDescription{a safety cap on extension rings (`Geodesic_ridge_statistics::ring_cap_hit` says when it stopped the growth)}
+///     \cgalParamType{`int`, at least `initial_rings`}
+///     \cgalParamDefault{`default_maximum_rings` (256)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_solves}
+///     \cgalParamDescription{solves of the solver on the extended surface at most}
+///     \cgalParamType{`int`, at least 1}
+///     \cgalParamDefault{`default_maximum_solves` (3)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{predicted_extension}
+///     \cgalParamDescription{fast-marching passes decide where the extended surface grows and the solver runs on the final one; with `false` every pass is a solve. Implied `false` by `guided_extension(true)`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{guided_extension}
+///     \cgalParamDescription{experimental: the extended surface also grows wherever a front continued across the cut is predicted to be still exact}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_spur_angle}
+///     \cgalParamDescription{degrees: free ends of the ridge whose gradient jump is below it are pruned, repeatedly (0 keeps every branch); fronts whose gradients across a mesh edge differ by less are one front}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{15}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{kink_angle}
+///     \cgalParamDescription{degrees: copies glued across a mesh edge whose gradients jump by this much are different fronts, and with the exact solver copies are split at kinks between their corners' fronts; 0 turns both off}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`default_kink_angle` (60)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{field}
+///     \cgalParamDescription{`Field::cone` also keeps the cones of the copies (`Ridge_curve::cones`) and traces the cone ridge (`Ridge_curve::cone_polylines`)}
+///     \cgalParamType{`Field`}
+///     \cgalParamDefault{`Field::linear`}
+///     \cgalParamExtra{`Field::cone` needs the exact solver}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{cone_ridge_tolerance}
+///     \cgalParamDescription{with `field(Field::cone)`: the cone ridge is split until the curve is within this many mean edge lengths of every chord's midpoint}
+///     \cgalParamType{`double`, in (0, 1]}
+///     \cgalParamDefault{`default_cone_ridge_tolerance` (0.001)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///                    as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in [0, `num_vertices(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///                    as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in [0, `num_faces(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+///                    as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in [0, `num_edges(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///                    as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
 /// \post the ridge is connected, a tree on a genus-0 surface, with exactly 2g
 ///   independent cycles on genus g (`Algorithm_error` otherwise).
-/// \post unless `statistics.outer_copies_winning > 0` (a cap stopped the
-///   growth), the extended surface holds a shortest path to every vertex:
-///   `vertex_distances` are the solver's distances on M.
+/// \post unless the ridge curve's `statistics.outer_copies_winning > 0` (a cap
+///   stopped the growth), the extended surface holds a shortest path to every
+///   vertex: `Ridge_curve::vertex_distances` are the solver's distances on M.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto compute_ridge_curve(const TriangleMesh& tm,
                          typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
@@ -727,6 +881,13 @@ auto compute_ridge_curve(const TriangleMesh& tm,
   return internal::ridge_curve_impl(tm, make_source(tm, source, np), np);
 }
 
+/// \ingroup PkgGeodesicRidgeRef
+/// \brief computes the geodesic ridge of the surface point `source` (a
+/// `Face_location`) on the closed triangle mesh `tm`, and returns a
+/// `Ridge_curve<TriangleMesh, Point_3>` with everything computed on the way.
+/// A location on an edge or at a vertex is handled as such.
+///
+/// \copydetails compute_ridge_curve(const TriangleMesh&, typename boost::graph_traits<TriangleMesh>::vertex_descriptor, const NamedParameters&)
 template <class TriangleMesh, class FT, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto compute_ridge_curve(const TriangleMesh& tm,
                          const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
@@ -739,7 +900,16 @@ auto compute_ridge_curve(const TriangleMesh& tm,
 }
 
 /// \ingroup PkgGeodesicRidgeRef
-/// One-shot version: writes the ridge polylines (`std::vector<Point_3>`) to `out`.
+/// \brief computes the geodesic ridge of `source` (a vertex or a
+/// `Face_location`) on `tm` and writes its polylines (`std::vector<Point_3>`,
+/// between junctions and free ends) to `out`: the one-shot version of
+/// `compute_ridge_curve()`.
+///
+/// \tparam OutputIterator an output iterator accepting `std::vector<Point_3>`
+/// \param out the output iterator
+/// \returns `out` past the last polyline
+///
+/// \copydetails compute_ridge_curve(const TriangleMesh&, typename boost::graph_traits<TriangleMesh>::vertex_descriptor, const NamedParameters&)
 template <class TriangleMesh, class Source, class OutputIterator,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 OutputIterator compute_geodesic_ridge(const TriangleMesh& tm, const Source& source, OutputIterator out,

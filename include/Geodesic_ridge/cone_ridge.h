@@ -57,6 +57,7 @@ struct Cone_ridge_statistics
   std::size_t points_kept = 0;     ///< at vertices, free ends, or without two fronts in the face
   std::size_t points_added = 0;    ///< inserted so that the chords follow the curve
   double largest_move = 0;         ///< the largest distance a point moved, in mean edge lengths
+  /// seconds spent tracing the cone ridge
   double time = 0;
 };
 

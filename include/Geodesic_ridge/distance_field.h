@@ -1,7 +1,8 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The region-wise distance field (DESIGN.md §5): on every face of M, the
+// The region-wise distance field (user manual, "The Region-wise Distance
+// Field"): on every face of M, the
 // lower envelope of the fields of the copies that survive there. Linear (the
 // paper's): the cells of `Ridge_curve::regions`, a query is the smallest of the
 // face's cell fields at the point, which is the envelope by definition; a face
@@ -42,14 +43,20 @@ template <class TriangleMesh, class VertexIndexMap, class FaceIndexMap>
 class Geodesic_distance_field
 {
 public:
+  /// the graph traits of `TriangleMesh`
   typedef boost::graph_traits<TriangleMesh> GT;
+  /// a vertex of the mesh
   typedef typename GT::vertex_descriptor vertex_descriptor;
+  /// a face of the mesh
   typedef typename GT::face_descriptor face_descriptor;
 
+  /// The linear field (`make_distance_field()` calls it).
   /// \param regions per face index, the cells of the lower envelope
   ///        (`Ridge_curve::regions`)
   /// \param vertex_distances per vertex index, the distance at the vertex
   ///        (`Ridge_curve::vertex_distances`)
+  /// \param vim, fim the vertex and face index maps the ridge was computed with
+  /// \pre every face has at least one cell (`Invalid_parameter_error` otherwise).
   Geodesic_distance_field(const std::vector<std::vector<Ridge_region_cell> >& regions,
                           const std::vector<double>& vertex_distances, VertexIndexMap vim, FaceIndexMap fim)
       : vertex_distances_(vertex_distances), vim_(vim), fim_(fim)
@@ -59,6 +66,8 @@ public:
 
   /// The cone field: per face index, the cones of its copies (`Ridge_curve::cones`)
   /// and the face's corner points (in the order of a `Face_location`).
+  /// \pre `cones` and `corners` have one entry per face, and every face has a
+  ///      cone (`Invalid_parameter_error` otherwise).
   template <class Point_3>
   Geodesic_distance_field(const std::vector<std::vector<Ridge_region_cell> >& regions,
                           const std::vector<std::vector<Face_cone> >& cones,
@@ -97,6 +106,7 @@ private:
 
 public:
 
+  /// The number of faces of the mesh.
   std::size_t number_of_faces() const { return first_cell_.size() - 1; }
 
   /// The number of cells of the envelope on face `f` (1 where no ridge
@@ -199,10 +209,39 @@ private:
 };
 
 /// \ingroup PkgGeodesicRidgeRef
-/// The region-wise field of a computed ridge. `np` must give the same
-/// `vertex_point_map`, `vertex_index_map` and `face_index_map` as the call that
-/// computed it; `parameters::field(Field::cone)` asks for the cone field (the
-/// ridge must have been computed with it too).
+/// \brief returns the region-wise distance field of a computed ridge, a
+/// `Geodesic_distance_field` (\ref GeodesicRidgeSecField).
+///
+/// \param tm the mesh
+/// \param ridge its ridge curve (`compute_ridge_curve()`)
+/// \param np an optional sequence of named parameters among the ones listed
+///        below; the maps must be those that computed `ridge`
+///
+/// \pre `ridge` was computed on `tm` (`Invalid_parameter_error` otherwise),
+///      and, if `np` asks for the cone field, with `field(Field::cone)` too.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{field}
+///     \cgalParamDescription{`Field::cone` asks for the cone field instead of the linear one}
+///     \cgalParamType{`Field`}
+///     \cgalParamDefault{`Field::linear`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in [0, `num_vertices(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in [0, `num_faces(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <class TriangleMesh, class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto make_distance_field(const TriangleMesh& tm, const Ridge_curve<TriangleMesh, Point>& ridge,
                          const NamedParameters& np = CGAL::parameters::default_values())
@@ -226,8 +265,11 @@ auto make_distance_field(const TriangleMesh& tm, const Ridge_curve<TriangleMesh,
 }
 
 /// \ingroup PkgGeodesicRidgeRef
-/// One call: computes the ridge of `source` (a vertex or a `Face_location`)
-/// with the named parameters of `compute_ridge_curve()`, and returns its field.
+/// \brief computes the ridge of `source` (a vertex or a `Face_location`) with
+/// `compute_ridge_curve()` and returns its region-wise distance field, a
+/// `Geodesic_distance_field` (`make_distance_field()`).
+///
+/// \copydetails compute_ridge_curve(const TriangleMesh&, typename boost::graph_traits<TriangleMesh>::vertex_descriptor, const NamedParameters&)
 template <class TriangleMesh, class Source, class NamedParameters = CGAL::parameters::Default_named_parameters>
 auto compute_distance_field(const TriangleMesh& tm, const Source& source,
                             const NamedParameters& np = CGAL::parameters::default_values())

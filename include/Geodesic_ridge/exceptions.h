@@ -16,50 +16,63 @@ namespace Geodesic_ridge {
 class Error : public std::runtime_error
 {
 public:
+  /// makes the exception with its one-line message
   explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// \ingroup PkgGeodesicRidgeRef
 /// The user's input is wrong; nothing was computed.
 class Input_error : public Error
 {
 public:
+  /// makes the exception with its one-line message
   using Error::Error;
 };
 
+/// \ingroup PkgGeodesicRidgeRef
 /// A mesh file cannot be opened, is truncated, or is not in a format we read.
 class Mesh_file_error : public Input_error
 {
 public:
+  /// makes the exception with its one-line message
   using Input_error::Input_error;
 };
 
+/// \ingroup PkgGeodesicRidgeRef
 /// The mesh is not one the algorithm supports (non-triangle, non-manifold,
 /// open, several components, degenerate faces, non-finite coordinates, ...).
 class Invalid_mesh_error : public Input_error
 {
 public:
+  /// makes the exception with its one-line message
   using Input_error::Input_error;
 };
 
+/// \ingroup PkgGeodesicRidgeRef
 /// The source (vertex index, face index, barycentric coordinates) is invalid.
 class Invalid_source_error : public Input_error
 {
 public:
+  /// makes the exception with its one-line message
   using Input_error::Input_error;
 };
 
+/// \ingroup PkgGeodesicRidgeRef
 /// A parameter (tolerance, ...) is out of its range or not a number.
 class Invalid_parameter_error : public Input_error
 {
 public:
+  /// makes the exception with its one-line message
   using Input_error::Input_error;
 };
 
+/// \ingroup PkgGeodesicRidgeRef
 /// An invariant of the algorithm failed (for example the cut is not a disk).
 /// This is a bug in the package, never a consequence of the input: report it.
 class Algorithm_error : public Error
 {
 public:
+  /// makes the exception with its one-line message
   using Error::Error;
 };
 

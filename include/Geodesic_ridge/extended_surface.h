@@ -1,7 +1,8 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Stage 2a: the extended surface E (DESIGN.md §3, paper §3.2.1).
+// Stage 2a: the extended surface E (user manual, "The Extended Surface";
+// paper §3.2.1).
 //
 // Cut the mesh M open along the cut graph K of stage 1 into a disk D, then grow
 // copies of faces across the boundary, one face at a time, ring by ring. Copies
@@ -48,6 +49,7 @@ struct Extended_surface_statistics
   std::size_t guided_faces = 0;         ///< copies added by the growth guided by the exact distance on M
   int guided_rings = 0;                 ///< rings the guided growth took (its deepest copy)
   bool guided_ring_cap_hit = false;     ///< the guided growth stopped at the ring cap
+  /// seconds spent by `build_extended_surface()`
   double time = 0;
 };
 
@@ -59,10 +61,14 @@ struct Extended_surface_statistics
 template <class Point_3>
 struct Extended_surface
 {
+  /// the type of E
   typedef CGAL::Surface_mesh<Point_3> Mesh;
+  /// a vertex of E
   typedef typename Mesh::Vertex_index vertex_descriptor;
+  /// a face of E (a copy of a face of M)
   typedef typename Mesh::Face_index   face_descriptor;
 
+  /// E: a valid oriented 2-manifold triangle mesh with a border
   Mesh mesh;
   /// per face of E: index of its original face in M
   std::vector<std::size_t> original_face;
@@ -72,9 +78,12 @@ struct Extended_surface
   std::vector<int> ring;
   /// the source in E (a vertex of E for a vertex source, else a face location in D)
   vertex_descriptor source_vertex;
+  /// the source in E as a face location in D (barycentric coordinates in CGAL's order)
   std::pair<face_descriptor, std::array<double, 3> > source_location;
+  /// whether the source is a vertex (`source_vertex`) or a surface point (`source_location`)
   bool source_is_vertex = true;
 
+  /// counts of the extension
   Extended_surface_statistics statistics;
 };
 
@@ -684,11 +693,49 @@ private:
 } // namespace internal
 
 /// \ingroup PkgGeodesicRidgeRef
-/// Builds the extended surface of `tm` cut along `rcl.cut_edges`, with `rings`
-/// extension rings.
+/// \brief builds the extended surface of `tm` cut along `rcl.cut_edges`, with
+/// `rings` extension rings grown everywhere (\ref GeodesicRidgeSecExtendedSurface).
 ///
-/// \param np CGAL's `vertex_point_map`, `vertex_index_map`, `face_index_map`,
-///        `edge_index_map` (the same as given to stage 1).
+/// The pipeline grows E by the growth rule instead, with the same builder
+/// (`compute_ridge_curve()`); this function is stage 2a alone.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param tm the mesh
+/// \param rcl its rough cut locus (`compute_rough_cut_locus()`)
+/// \param rings the number of extension rings
+/// \param np an optional sequence of named parameters among the ones listed
+///        below: the same as given to `compute_rough_cut_locus()`
+///
+/// \pre `rcl` was computed on `tm` with the same index maps.
+/// \pre `rings >= 0` (`Invalid_parameter_error` otherwise).
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in [0, `num_vertices(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in [0, `num_faces(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in [0, `num_edges(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns E, an `Extended_surface<Point_3>` (`Point_3` the value type of the
+///          vertex point map)
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Extended_surface<typename boost::property_traits<typename CGAL::GetVertexPointMap<
     TriangleMesh, NamedParameters>::const_type>::value_type>

@@ -27,14 +27,18 @@ namespace Geodesic_ridge {
 template <class Point_3>
 struct Isoline
 {
+  /// the distance of the iso-line
   double level = 0;
+  /// its points, on the edges of the mesh
   std::vector<Point_3> points;
+  /// whether it is a closed curve (else it ends on the border)
   bool closed = false;
 };
 
 /// \ingroup PkgGeodesicRidgeRef
 /// `n` levels equally spaced strictly between 0 and `largest`:
-/// `largest * i / (n + 1)`, i = 1..n.
+/// `largest * i / (n + 1)`, i = 1..n (for example with `largest` the
+/// `Geodesic_distance_field::maximum_distance()`).
 inline std::vector<double> equally_spaced_levels(std::size_t n, double largest)
 {
   std::vector<double> levels;
@@ -51,7 +55,43 @@ inline std::vector<double> equally_spaced_levels(std::size_t n, double largest)
 /// A vertex exactly at a level counts as above it (a symbolic perturbation),
 /// so every face holds at most one segment per level and the segments chain
 /// through the edges into closed curves, or curves that end on the border.
-/// \param np `vertex_point_map`, `edge_index_map`, `face_index_map` of `tm`.
+/// On the ridge-refined mesh (`refine_mesh_along_ridge()`) these are the
+/// iso-lines of the region-wise field, sharp where they cross the ridge.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+/// \tparam DistanceMap a model of `ReadablePropertyMap` with
+///         `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type
+///         and `double` as value type
+/// \tparam OutputIterator an output iterator accepting `Isoline<Point_3>`,
+///         `Point_3` the value type of the vertex point map
+///
+/// \param tm the mesh
+/// \param distance_map the distance at every vertex
+/// \param levels the distances of the iso-lines
+/// \param out the output iterator
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \pre every level is finite (`Invalid_parameter_error` otherwise).
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in [0, `num_faces(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in [0, `num_edges(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns `out` past the last iso-line
 template <class TriangleMesh, class DistanceMap, class OutputIterator,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 OutputIterator isolines(const TriangleMesh& tm, DistanceMap distance_map, const std::vector<double>& levels,

@@ -2,15 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 2c: the lower envelope of the linear distance fields of the copies of
-// one face (DESIGN.md §3 "Lower envelope").
+// one face (user manual, "The Exact Lower Envelope").
 //
 // Every copy i of a face carries the field f_i(λ) = λ0 d0^i + λ1 d1^i + λ2 d2^i,
 // linear in the barycentric coordinates λ. The cell of copy i is where f_i is
 // the lowest field; the edges between cells are the pieces of the ridge inside
 // the face.
 //
-// Method. The design allows CGAL `halfspace_intersection_3` over a prism or an
-// equivalent exact half-plane clipping; we clip. f_i − f_j = (d^i − d^j)·λ is
+// Method. CGAL `halfspace_intersection_3` over a prism (the paper's) or an
+// equivalent exact half-plane clipping would do; we clip. f_i − f_j = (d^i − d^j)·λ is
 // linear in λ, so each cell is the triangle {λ ≥ 0} clipped by the half-planes
 // (d^i − d^j)·λ ≤ 0, computed in barycentric coordinates directly: no 2D layout
 // of the triangle, no 3D construction, and points on the triangle's edges and
@@ -71,7 +71,9 @@ enum class Triangle_feature_type : unsigned char
 /// Stage 3 joins segments of adjacent faces with it, combinatorially.
 struct Triangle_feature
 {
+  /// interior, edge or corner
   Triangle_feature_type type = Triangle_feature_type::interior;
+  /// the triangle edge or corner (0, 1 or 2), -1 for the interior
   int index = -1;
 
   friend bool operator==(const Triangle_feature& a, const Triangle_feature& b)
@@ -90,10 +92,14 @@ inline int zero_coordinate_of_triangle_edge(int k) { return (k + 2) % 3; }
 /// of copies) or one of the three largest `std::size_t` values, which stand for
 /// the triangle edges 0, 1, 2. Use these functions rather than the values.
 /// @{
+
+/// the label of triangle edge `k`
 inline constexpr std::size_t triangle_edge_label(int k)
 { return (std::numeric_limits<std::size_t>::max)() - 2 + static_cast<std::size_t>(k); }
+/// whether `label` stands for a triangle edge (else it is a copy's index)
 inline constexpr bool is_triangle_edge_label(std::size_t label)
 { return label >= (std::numeric_limits<std::size_t>::max)() - 2; }
+/// the triangle edge that `label` stands for
 /// \pre `is_triangle_edge_label(label)`
 inline constexpr int triangle_edge_of_label(std::size_t label)
 { return static_cast<int>(label - ((std::numeric_limits<std::size_t>::max)() - 2)); }
@@ -133,6 +139,7 @@ struct Envelope_cell
 template <class FT>
 struct Envelope_segment
 {
+  /// the copies on either side (copy_a < copy_b)
   std::size_t copy_a = 0, copy_b = 0; ///< copy_a < copy_b
   std::array<std::array<FT, 3>, 2> endpoints; ///< barycentric, exact with an exact `FT`
   /// Where each endpoint lies: a triangle corner, a triangle edge, or the
@@ -146,7 +153,9 @@ struct Envelope_segment
 template <class FT>
 struct Lower_envelope
 {
+  /// the cells of positive area, by copy index
   std::vector<Envelope_cell<FT>> cells;
+  /// the ridge segments inside the face, by (copy_a, copy_b)
   std::vector<Envelope_segment<FT>> segments;
 };
 
@@ -546,11 +555,9 @@ Lower_envelope<FT> compute(const std::vector<std::array<double, 3>>& d)
 ///         `CGAL::Exact_predicates_exact_constructions_kernel::FT` (the clipping
 ///         then runs in its exact type, and the result is converted),
 ///         `CGAL::Gmpq` (the clipping then runs in `CGAL::Mpzf`, the
-///         normalization in `Gmpq`), or `boost::multiprecision::mpq_rational`.
-///         Measured (`bench_lower_envelope`, g++ 12 -O2, fields of fronts that
-///         cross in the face), per face, m = 2 / 4 / 8 copies: Epeck FT 5.8 /
-///         11 / 21 µs, `Gmpq` 3.0 / 5.6 / 9.7 µs (4.3 / 8.6 / 16 µs with the
-///         clipping in `Gmpq` too), `double` 0.3 / 0.5 / 0.9 µs. `double` works, for comparison
+///         normalization in `Gmpq`; the fastest of those measured, and the pipeline's), or
+///         `boost::multiprecision::mpq_rational`. Timings per number type:
+///         \ref GeodesicRidgeSecPerformance. `double` works, for comparison
 ///         only: the result is then approximate, may miss or add tiny cells
 ///         when fields nearly coincide, and features are decided by the exact
 ///         zeros that the construction gives (corners and clipped triangle edges).

@@ -140,7 +140,7 @@ Epick_point_3 to_epick(const Point_3& p)
 ///
 /// Each rule relies on the previous ones (for instance the fan walk of rule 11
 /// needs closed, oriented, edge-manifold input). The cost is
-/// \f$ O(V + F) \f$ time and memory (bucket sorts, no hash map): a 200k-face
+/// O(V + F) time and memory (bucket sorts, no hash map): a 200k-face
 /// mesh validates in a few tens of milliseconds.
 ///
 /// \tparam Point_3 a point type of a \cgal kernel (`CGAL::Kernel_traits` is used
@@ -415,10 +415,10 @@ void validate_triangle_soup(const std::vector<Point_3>& points, const std::vecto
 /// coordinates, several components, degenerate faces).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
-/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \tparam NamedParameters a sequence of named parameters (\ref GeodesicRidgeSecParameters)
 ///
 /// \param tm the mesh
-/// \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+/// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{vertex_point_map}

@@ -30,23 +30,26 @@ struct leaf_curvature_t {};
 struct branch_curvature_t {};
 } // namespace internal_np
 
+/// \ingroup PkgGeodesicRidgeNamedParameters
 /// Default significance tolerance, as recommended by the paper (§4.4).
 constexpr double default_tolerance = 0.025;
 
+/// \ingroup PkgGeodesicRidgeNamedParameters
 /// Default leaf extension: 1, i.e. none (see `parameters::leaf_extension`).
-/// Measured (bench_ridge_accuracy, bundled meshes): 0.1 brings the ridge to
-/// the corners of the analytic cases but costs precision on real meshes
-/// (knot_3k p95 0.27 -> 0.89 mean edges), through the false tips it adds.
+/// A smaller value brings the ridge to the corners of the analytic cases but
+/// costs precision on real meshes, through the false tips it adds (measured
+/// in the user manual, \ref GeodesicRidgeSecParameters).
 constexpr double default_leaf_extension = 1.0;
 
+/// \ingroup PkgGeodesicRidgeNamedParameters
 /// Default curvature that draws a leaf of K on (degrees; see
-/// `parameters::leaf_curvature`). Measured (bench_ridge_accuracy, 28 runs on
-/// the meshes of ../shared/data up to 13.3k faces): recall p95 at the default
-/// tolerance improves (bunny_7k v0 2.66 -> 0.26, teddy_3k v0 2.74 -> 0.77,
-/// cheburashka_13k v3334 7.8 -> 3.2 mean edges) at the same precision (p95
-/// 0.04-0.47); 45 reached more corners of the convex test polyhedra than 30.
+/// `parameters::leaf_curvature`). It improves the recall of the ridge's tips
+/// at the same precision, and reached more corners of the convex test
+/// polyhedra than 30 (measured in the user manual,
+/// \ref GeodesicRidgeSecAccuracyStage1).
 constexpr double default_leaf_curvature = 45;
 
+/// \ingroup PkgGeodesicRidgeNamedParameters
 /// Default curvature a kept branch of the dual tree must enclose (degrees;
 /// see `parameters::branch_curvature`).
 constexpr double default_branch_curvature = 15;

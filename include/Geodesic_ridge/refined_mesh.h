@@ -1,7 +1,8 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The ridge-refined mesh (DESIGN.md §5): M with every face that holds more
+// The ridge-refined mesh (user manual, "The Region-wise Distance Field"): M
+// with every face that holds more
 // than one cell of the envelope split along every cell boundary, so that each
 // new face lies in one cell, where the field is linear, and linear
 // interpolation of one distance per vertex is the region-wise field.
@@ -40,7 +41,7 @@ struct vertex_distance_map_t {};
 } // namespace internal_np
 
 namespace parameters {
-/// \ingroup PkgGeodesicRidgeRef
+/// \ingroup PkgGeodesicRidgeNamedParameters
 /// Named parameter of `refine_mesh_along_ridge()`: a writable vertex property
 /// map of the output mesh that receives the distance at each vertex.
 template <class PropertyMap>
@@ -48,6 +49,8 @@ CGAL::Named_function_parameters<PropertyMap, internal_np::vertex_distance_map_t>
 {
   return CGAL::Named_function_parameters<PropertyMap, internal_np::vertex_distance_map_t>(m);
 }
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// Same, added to the named parameters `np`.
 template <class PropertyMap, class NamedParameters>
 CGAL::Named_function_parameters<PropertyMap, internal_np::vertex_distance_map_t, NamedParameters>
 vertex_distance_map(PropertyMap m, const NamedParameters& np)
@@ -63,6 +66,7 @@ vertex_distance_map(PropertyMap m, const NamedParameters& np)
 /// corefinement visitor tells which face a new face came from).
 struct Default_refinement_visitor
 {
+  /// called once per output face `created`, with the face `original` of the input it lies in
   template <class InputFace, class OutputFace>
   void face_created(InputFace, OutputFace) {}
 };
@@ -72,6 +76,7 @@ struct Default_refinement_visitor
 struct Refined_mesh_statistics
 {
   std::size_t split_faces = 0;          ///< faces of M with more than one cell, or with points of a neighbour's cells on an edge
+  /// vertices and faces of the output
   std::size_t vertices = 0, faces = 0;  ///< of the output
   std::size_t centre_vertices = 0;      ///< added inside cells whose sides hold points of other cells
   std::size_t ridge_edges = 0;          ///< output edges marked as ridge
@@ -463,14 +468,73 @@ private:
 /// over both sides); `Refined_mesh_statistics::largest_disagreement` reports
 /// the largest difference.
 ///
-/// \param np_in `vertex_point_map`, `vertex_index_map`, `face_index_map`,
-///        `edge_index_map` of `tm`: those the ridge was computed with.
-/// \param np_out `vertex_point_map` of `out`;
-///        `Geodesic_ridge::parameters::vertex_distance_map(m)`: receives the
-///        distance per output vertex; `edge_is_constrained_map(m)`: set to true
-///        on the output edges of the reported ridge (and false elsewhere);
-///        `visitor(v)`: see `Default_refinement_visitor`.
-/// \tparam MutableFaceGraph a model of `MutableFaceGraph`, empty on entry.
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam MutableFaceGraph a model of `MutableFaceGraph`
+///
+/// \param tm the mesh
+/// \param ridge its ridge curve (`compute_ridge_curve()`)
+/// \param out the output mesh
+/// \param np_in an optional sequence of named parameters of `tm` among the
+///        ones listed below: those the ridge was computed with
+/// \param np_out an optional sequence of named parameters of `out` among the
+///        ones listed below
+///
+/// \pre `out` is empty, and `ridge` was computed on `tm`
+///      (`Invalid_parameter_error` otherwise).
+///
+/// \returns the counts of the refinement
+///
+/// \cgalNamedParamsBegin{Named Parameters of the Input (np_in)}
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in [0, `num_vertices(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in [0, `num_faces(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index in [0, `num_edges(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{field}
+///     \cgalParamDescription{the field whose values the output vertices take; the faces are split along the cells of the linear field either way}
+///     \cgalParamType{`Field`}
+///     \cgalParamDefault{`Field::linear`}
+///     \cgalParamExtra{`Field::cone` needs a ridge computed with `field(Field::cone)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \cgalNamedParamsBegin{Named Parameters of the Output (np_out)}
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `out`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<MutableFaceGraph>::%vertex_descriptor` as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, out)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_distance_map}
+///     \cgalParamDescription{receives the distance at every output vertex (`Geodesic_ridge::parameters::vertex_distance_map()`)}
+///     \cgalParamType{a class model of `WritablePropertyMap` with `boost::graph_traits<MutableFaceGraph>::%vertex_descriptor` as key type and `double` as value type}
+///     \cgalParamDefault{none: the distances are not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map}
+///     \cgalParamDescription{set to `true` on the output edges of the reported ridge, `false` elsewhere}
+///     \cgalParamType{a class model of `WritablePropertyMap` with `boost::graph_traits<MutableFaceGraph>::%edge_descriptor` as key type and `bool` as value type}
+///     \cgalParamDefault{none: the ridge edges are not marked}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{called once per output face with the face of the input it lies in (see `Default_refinement_visitor`)}
+///     \cgalParamType{a class with `void face_created(boost::graph_traits<TriangleMesh>::%face_descriptor original, boost::graph_traits<MutableFaceGraph>::%face_descriptor created)`}
+///     \cgalParamDefault{`Default_refinement_visitor()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <class TriangleMesh, class Point, class MutableFaceGraph,
           class NamedParametersIn = CGAL::parameters::Default_named_parameters,
           class NamedParametersOut = CGAL::parameters::Default_named_parameters>

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Stage 3: the ridge curve (DESIGN.md §4).
+// Stage 3: the ridge curve (user manual, "Stage 3: The Ridge Curve").
 //
 // Every point of M is labelled by the copy that wins the lower envelope there.
 // Two labels are the same front when their copies are glued in the extended
@@ -43,8 +43,11 @@ namespace Geodesic_ridge {
 template <class Point_3>
 struct Ridge_point
 {
+  /// the face of M (its index)
   std::size_t face = 0;
+  /// barycentric coordinates in the face, in CGAL's corner order
   std::array<double, 3> barycentric = {{0, 0, 0}};
+  /// the 3D point
   Point_3 point;
   /// degrees: the largest angle between the arrival directions of the two
   /// fronts over the ridge segments at this point
@@ -64,6 +67,7 @@ struct Ridge_region_cell
 /// Counts of stage 3.
 struct Ridge_curve_statistics
 {
+  /// faces of M with more than one undominated copy
   std::size_t faces_with_several_copies = 0;
   std::size_t surviving_copies = 0;       ///< copies not dominated, over all faces
   std::size_t split_copies = 0;           ///< copies split at a kink between their corners' fronts (cones)
@@ -75,8 +79,15 @@ struct Ridge_curve_statistics
   std::size_t dropped_components = 0;     ///< detached pieces dropped
   std::size_t pruned_spur_segments = 0;   ///< free-end segments with a gradient jump below the minimum angle
   std::size_t pruned_flat_end_segments = 0; ///< free-end segments with no positive curvature near their end
+  /// \name The Ridge
+  //@{
+  /// The ridge's segments, junctions (points where three or more regions
+  /// meet), free ends, connected components (1) and independent cycles (2g).
   std::size_t ridge_segments = 0, junctions = 0, free_ends = 0, components = 0, cycles = 0;
+  //@}
+  /// the ridge's total length
   double total_length = 0;
+  /// seconds spent in stages 2c and 3
   double time = 0;
 };
 

@@ -25,16 +25,30 @@ namespace Geodesic_ridge {
 /// Where the source lies, after validation. A `Face_location` whose
 /// barycentric coordinates put it on a vertex or an edge is classified as such,
 /// because the cut must avoid exactly that vertex or edge.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
 template <class TriangleMesh>
 struct Geodesic_source
 {
+  /// the graph traits of `TriangleMesh`
   typedef boost::graph_traits<TriangleMesh>                 GT;
+  /// a vertex of the mesh
   typedef typename GT::vertex_descriptor                   vertex_descriptor;
+  /// a face of the mesh
   typedef typename GT::face_descriptor                     face_descriptor;
+  /// a halfedge of the mesh
   typedef typename GT::halfedge_descriptor                 halfedge_descriptor;
 
+  /// where the source lies
   enum Kind { ON_VERTEX, ON_EDGE, IN_FACE };
+  /// \var Geodesic_source::ON_VERTEX
+  /// at a vertex of the mesh
+  /// \var Geodesic_source::ON_EDGE
+  /// in the interior of an edge
+  /// \var Geodesic_source::IN_FACE
+  /// in the interior of a face
 
+  /// where the source lies
   Kind kind = ON_VERTEX;
   /// the source vertex (`ON_VERTEX` only)
   vertex_descriptor vertex;
@@ -62,7 +76,12 @@ double distance_between(const VPM& vpm, const Key& a, const Key& b)
 
 } // namespace internal
 
-/// Makes a source at vertex `v`. Throws `Invalid_source_error` if `v` is not a vertex of `tm`.
+/// \ingroup PkgGeodesicRidgeRef
+/// Makes a source at vertex `v`.
+/// \param tm the mesh
+/// \param v the source vertex
+/// \param vim the vertex index map of `tm`
+/// \pre `v` is a vertex of `tm` (`Invalid_source_error` otherwise).
 template <class TriangleMesh, class VertexIndexMap>
 Geodesic_source<TriangleMesh>
 make_vertex_source(const TriangleMesh& tm,
@@ -99,11 +118,19 @@ make_vertex_source(const TriangleMesh& tm,
   return s;
 }
 
+/// \ingroup PkgGeodesicRidgeRef
 /// Makes a source at a surface point given by a face and barycentric
 /// coordinates ordered as `source(halfedge(f))`, `target(halfedge(f))`,
-/// `target(next(halfedge(f)))` (CGAL's `Face_location`). Throws
-/// `Invalid_source_error` if the face is not in `tm` or the coordinates are
-/// not finite, negative, or do not sum to 1 (within 1e-9).
+/// `target(next(halfedge(f)))` (CGAL's `Face_location`). A location with two
+/// zero coordinates is a vertex source, one with one zero coordinate lies on
+/// an edge.
+/// \param tm the mesh
+/// \param loc the surface point
+/// \param vpm, fim, vim the vertex point map, the face index map and the
+///        vertex index map of `tm`
+/// \pre the face of `loc` is a face of `tm`, and its coordinates are finite,
+///      non-negative and sum to 1 within 1e-9 (`Invalid_source_error`
+///      otherwise).
 template <class TriangleMesh, class FT, class VertexPointMap, class FaceIndexMap, class VertexIndexMap>
 Geodesic_source<TriangleMesh>
 make_face_source(const TriangleMesh& tm,
@@ -178,9 +205,22 @@ make_face_source(const TriangleMesh& tm,
 }
 
 /// \ingroup PkgGeodesicRidgeRef
-/// Makes a source from a vertex or a `Face_location`, reading the maps it needs
-/// from the named parameters (CGAL's `vertex_point_map`, `vertex_index_map`,
-/// `face_index_map`): what every entry point of the package calls.
+/// \brief makes a source at the vertex `v`, reading the maps it needs from the
+/// named parameters: what every entry point of the package calls.
+///
+/// \param tm the mesh
+/// \param v the source vertex
+/// \param np a sequence of named parameters among the ones listed below
+/// \pre `v` is a vertex of `tm` (`Invalid_source_error` otherwise).
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in [0, `num_vertices(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///                    as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <class TriangleMesh, class NamedParameters>
 Geodesic_source<TriangleMesh>
 make_source(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor v,
@@ -189,6 +229,37 @@ make_source(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::
   return make_vertex_source(tm, v, CGAL::get_initialized_vertex_index_map(tm, np));
 }
 
+/// \ingroup PkgGeodesicRidgeRef
+/// \brief makes a source at the surface point `loc` (a `Face_location`),
+/// reading the maps it needs from the named parameters (see `make_face_source()`).
+///
+/// \param tm the mesh
+/// \param loc the surface point
+/// \param np a sequence of named parameters among the ones listed below
+/// \pre the face of `loc` is a face of `tm`, and its coordinates are finite,
+///      non-negative and sum to 1 within 1e-9 (`Invalid_source_error`
+///      otherwise).
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///                    as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in [0, `num_vertices(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///                    as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in [0, `num_faces(tm)`)}
+///     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+///                    as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <class TriangleMesh, class FT, class NamedParameters>
 Geodesic_source<TriangleMesh>
 make_source(const TriangleMesh& tm,

@@ -1,8 +1,9 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Test support: meshes whose geodesic cut locus is known analytically
-// (DESIGN.md §6), and the small geometric helpers the oracle tests need.
+// Test support: meshes whose geodesic cut locus is known analytically (user
+// manual, "Analytic Cases"), and the small geometric helpers the oracle tests
+// need.
 //
 // * `make_doubly_covered_square()`: two flat sheets [0,1]^2 glued along their
 //   border, both at z = 0 (coincident in 3D; the package's validation is

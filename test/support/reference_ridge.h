@@ -1,7 +1,8 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The measure of correctness of DESIGN.md §6, for tests and benchmarks:
+// The measure of correctness (user manual, "How Accuracy Is Measured"), for
+// tests and benchmarks:
 //
 //  * `reference_ridge()`: the EXACT ridge of a source, sampled, from CGAL's
 //    Surface_mesh_shortest_path (SMSP). x is on the exact ridge iff the arrival

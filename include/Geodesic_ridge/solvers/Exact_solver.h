@@ -26,6 +26,7 @@ namespace Geodesic_ridge {
 struct Face_cone
 {
   std::array<double, 3> apex = {{0, 0, 0}}; ///< barycentric in the face (CGAL's corner order; may lie outside it)
+  /// the distance at the apex
   double offset = 0;
 };
 
@@ -35,6 +36,7 @@ struct Face_cone
 /// Meshes with a boundary are fine: window propagation stops at border edges.
 struct Exact_solver
 {
+  /// "exact"
   static const char* name() { return "exact"; }
 
   /// Distances from vertex `s` of `tm` to every vertex, written to `distance`.
@@ -49,6 +51,9 @@ struct Exact_solver
   }
 
   /// Distances from the point `loc` (face + barycentric coordinates, CGAL's order).
+  /// With \cgal before 5.6, a point on an edge is moved into its face by 2^-40
+  /// of the barycentric range (\cgal issue 6681: no cone towards the ends of
+  /// the source's edge), which changes distances by about 1e-13 of an edge.
   template <class TriangleMesh, class FT, class VertexDistanceMap>
   void operator()(const TriangleMesh& tm,
                   const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
@@ -85,12 +90,13 @@ struct Exact_solver
     face_cones(tm, sp, cones, wanted, samples);
   }
 
-  /// The points of a face (barycentric) whose shortest paths give its cones.
-  /// The cone field evaluates, per copy, the cone of the sample nearest to the
-  /// query: measured (bench_distance_field), one sample (the centroid) leaves
-  /// a mean error 7 times that of seven, the minimum over the samples' cones
-  /// is worse still (a cone evaluated beyond its window, in the shadow of a
-  /// saddle vertex, is too short).
+  /// The points of a face (barycentric) whose shortest paths give its cones:
+  /// the centroid, three points near the corners and three near the edge
+  /// midpoints. The cone field evaluates, per copy, the cone of the sample
+  /// nearest to the query: one sample (the centroid) leaves a larger mean
+  /// error, and the minimum over the samples' cones is worse still (a cone
+  /// evaluated beyond its window, in the shadow of a saddle vertex, is too
+  /// short); measured in the user manual, \ref GeodesicRidgeSecAccuracyField.
   static const std::vector<std::array<double, 3> >& cone_samples()
   {
     static const std::vector<std::array<double, 3> > samples = {

@@ -132,8 +132,11 @@ void fast_marching_distances(const TriangleMesh& tm, const VertexPointMap& vpm, 
 /// stage 1 (only the direction of descent matters there).
 struct Fast_marching_solver
 {
+  /// "fmm"
   static const char* name() { return "fmm"; }
 
+  /// Distances from vertex `s` of `tm` to every vertex, written to `distance`
+  /// (infinity where unreachable).
   template <class TriangleMesh, class VertexDistanceMap>
   void operator()(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor s,
                   VertexDistanceMap distance) const
@@ -141,6 +144,9 @@ struct Fast_marching_solver
     run(tm, make_source(tm, s, CGAL::parameters::default_values()).seeds, distance);
   }
 
+  /// Distances from the point `loc` (face + barycentric coordinates, CGAL's
+  /// order): the vertices of the faces that hold it start at their
+  /// straight-line distances.
   template <class TriangleMesh, class FT, class VertexDistanceMap>
   void operator()(const TriangleMesh& tm,
                   const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,

@@ -14,6 +14,10 @@ vertices of cone angle up to 4π (at the ends of the cut) are border vertices.
 
 Planned models: heat method (`CGAL::Heat_method_3`), Dijkstra on the edge graph
 (an upper bound, for tests).
+
+The named parameter `Geodesic_ridge::parameters::solver()` passes a model to the
+pipeline (user manual: \ref GeodesicRidgeSecSolvers). This file documents the
+concept; it is no header to include.
 */
 class GeodesicSolver
 {
