@@ -79,10 +79,11 @@ int main(int argc, char** argv)
         const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         t_smsp = std::min(t_smsp, t);
         Result r = Geodesic_ridge::compute_ridge_curve(mesh, source, options.parameters(tolerance));
-        if(k == 0 || r.statistics.time_total < rc.statistics.time_total) rc = std::move(r);
-        spent += t + rc.statistics.time_total;
+        if(k == 0 || r.timings.total() < rc.timings.total()) rc = std::move(r);
+        spent += t + rc.timings.total();
       }
       const auto& s = rc.statistics;
+      const auto& time = rc.timings;
       rusage usage;
       getrusage(RUSAGE_SELF, &usage);
       char line[1024];
@@ -90,8 +91,9 @@ int main(int argc, char** argv)
                     "| %s | %zu | %d | %.2f | %d | %d | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.2f | %.0f | %zu | %zu |\n",
                     fs::path(file).filename().string().c_str(), std::size_t(mesh.number_of_faces()), s.rough_cut_locus.genus,
                     double(s.extended_surface.number_of_faces) / mesh.number_of_faces(), s.extended_surface.rings,
-                    s.solves, s.time_solve_on_mesh, s.time_rough_cut_locus, s.time_extension, s.time_solve, s.time_envelope,
-                    s.time_assembly, s.time_total, t_smsp, s.time_total / t_smsp, usage.ru_maxrss / 1024.0,
+                    s.solves, time["tree_distances"], time["rough_cut_locus"], time["extended_surface"], time["solve"],
+                    time["envelope_and_dominance"], time["ridge_assembly"], time.total(), t_smsp, time.total() / t_smsp,
+                    usage.ru_maxrss / 1024.0,
                     s.ridge.junctions, s.ridge.cycles);
       std::cout << line << std::flush;
     }

@@ -72,12 +72,12 @@ int main(int argc, char** argv)
     for(int k = 0; k < runs; ++k)
     {
       r = Geodesic_ridge::compute_rough_cut_locus(mesh, Mesh::Vertex_index(0));
-      const auto& s = r.statistics;
-      t_tree.push_back(s.time_shortest_path_tree);
-      t_sig.push_back(s.time_significance);
-      t_cut.push_back(s.time_cut_graph);
-      t_check.push_back(s.time_disk_check);
-      t_total.push_back(s.time_total);
+      const auto& time = r.timings;
+      t_tree.push_back(time["shortest_path_tree"]);
+      t_sig.push_back(time["significance"]);
+      t_cut.push_back(time["cut_graph"]);
+      t_check.push_back(time["disk_check"]);
+      t_total.push_back(time.total());
     }
     double t_exact = -1;
     if(exact)

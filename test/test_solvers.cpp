@@ -226,3 +226,46 @@ TEST_CASE("fast marching as the pipeline's solver gives a ridge with the right t
     CHECK(rc.statistics.ridge.cycles == (name == "torus_1k.off" ? 2u : 0u));
   }
 }
+
+TEST_CASE("a user's vertex point map reaches the solvers and every stage", "[solvers][ridge_curve]")
+{
+  // mesh A's own points are bunny_1k's; the map gives those of B, bunny_1k
+  // scaled, turned and moved: on A with the map, everything must be as on B
+  Mesh a = load("bunny_1k.off");
+  Mesh b = a;
+  auto b_point = [](const Point_3& p) { return Point_3(2 * p.y() + 1, -2 * p.x(), 2 * p.z() - 3); };
+  for(vertex_descriptor v : b.vertices()) b.point(v) = b_point(a.point(v));
+  auto map = a.add_property_map<vertex_descriptor, Point_3>("v:geometry").first;
+  for(vertex_descriptor v : a.vertices()) map[v] = b.point(v);
+  const vertex_descriptor s(17);
+  const auto on_a = CGAL::parameters::vertex_point_map(map);
+
+  std::vector<double> da(a.number_of_vertices()), db(b.number_of_vertices());
+  Geodesic_ridge::Exact_solver()(a, s, CGAL::make_property_map(da), on_a);
+  Geodesic_ridge::Exact_solver()(b, s, CGAL::make_property_map(db));
+  CHECK(da == db);
+  Geodesic_ridge::Fast_marching_solver()(a, s, CGAL::make_property_map(da), on_a);
+  Geodesic_ridge::Fast_marching_solver()(b, s, CGAL::make_property_map(db));
+  CHECK(da == db);
+  // (the map is not a no-op: A's own points give other distances)
+  std::vector<double> own(a.number_of_vertices());
+  Geodesic_ridge::Fast_marching_solver()(a, s, CGAL::make_property_map(own));
+  CHECK(own != db);
+
+  for(bool tree_from_solver : {false, true})
+  {
+    INFO("tree_from_solver " << tree_from_solver);
+    const auto ra = Geodesic_ridge::compute_ridge_curve(
+        a, s, Geodesic_ridge::parameters::tree_from_solver(tree_from_solver).vertex_point_map(map));
+    const auto rb =
+        Geodesic_ridge::compute_ridge_curve(b, s, Geodesic_ridge::parameters::tree_from_solver(tree_from_solver));
+    CHECK(ra.rough_cut_locus.cut_edges == rb.rough_cut_locus.cut_edges);
+    CHECK(ra.vertex_distances == rb.vertex_distances);
+    REQUIRE(ra.polylines.size() == rb.polylines.size());
+    for(std::size_t i = 0; i < ra.polylines.size(); ++i)
+    {
+      REQUIRE(ra.polylines[i].size() == rb.polylines[i].size());
+      for(std::size_t j = 0; j < ra.polylines[i].size(); ++j) CHECK(ra.polylines[i][j].point == rb.polylines[i][j].point);
+    }
+  }
+}

@@ -15,11 +15,11 @@
 #include <Geodesic_ridge/rough_cut_locus.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>
 #include <Geodesic_ridge/solvers/Fast_marching_solver.h>
+#include <Geodesic_ridge/timings.h>
 
 #include <CGAL/Named_function_parameters.h>
 
 #include <algorithm>
-#include <chrono>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -157,7 +157,7 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, cone_ridge_tolerance)
 } // namespace parameters
 
 /// \ingroup PkgGeodesicRidgeRef
-/// Counts and timings of the whole pipeline (seconds).
+/// Counts of the whole pipeline: what it did and what happened.
 struct Geodesic_ridge_statistics
 {
   /// the solver's name (`GeodesicSolver::name()`)
@@ -176,16 +176,6 @@ struct Geodesic_ridge_statistics
   Ridge_curve_statistics ridge;
   Cone_ridge_statistics cone_ridge; ///< with `field(Field::cone)`
   bool tree_from_solver = false; ///< the tree followed the solver's distances on M (else fast marching)
-  double time_solve_on_mesh = 0; ///< the distances on M that shape the tree of stage 1
-  /// \name Timings
-  //@{
-  /// Seconds spent in stage 1, growing and materializing the extended surface,
-  /// solving on it, finding the undominated copies and the copies still
-  /// winning on its border, the lower envelopes and the ridge curve (stages 2c
-  /// and 3), and in total.
-  double time_rough_cut_locus = 0, time_extension = 0, time_solve = 0, time_envelope = 0,
-         time_assembly = 0, time_total = 0;
-  //@}
 };
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -212,8 +202,14 @@ struct Ridge_curve
   std::vector<std::vector<Ridge_point<Point_3> > > cone_polylines;
   /// the result of stage 1 (the cut graph K, its tree and its statistics)
   Rough_cut_locus<TriangleMesh> rough_cut_locus;
-  /// counts and timings of every stage
+  /// counts of every stage
   Geodesic_ridge_statistics statistics;
+  /// seconds per step of the pipeline: `tree_distances`, `rough_cut_locus`,
+  /// `extended_surface` (growing and materializing E), `solve`,
+  /// `envelope_and_dominance` (the undominated copies and the copies still
+  /// winning on E's border), `ridge_assembly` (envelopes and ridge, stages 2c
+  /// and 3), `cone_ridge`; `rough_cut_locus.timings` splits stage 1
+  Timings timings;
 };
 
 namespace internal {
@@ -438,290 +434,423 @@ struct Growth_schedule
 // Stage 2b: grows E from the builder's rings by the growth rule and solves on
 // it; leaves E, the undominated copies of every face and the best copy of every
 // vertex from the last solve.
+//
+// The growth rule (user manual, "The Solve and the Growth Rule"): E grows a
+// band of rings around every copy that still comes lowest somewhere on one of
+// its border edges, until none does. A shortest path that leaves E crosses E's
+// border where its front is exact, so no copy is lower there: without such
+// copies E holds every shortest path. Passes on E decide the growth:
+//  * predicted: fast marching from the source (cheap; most of the growth);
+//  * solve: the solver (its distances make the ridge; its test is within
+//    round-off for the exact solver);
+//  * anchored: after a solve that still found such copies, fast marching on
+//    the grown E seeded with the solver's distances on the copies it solved,
+//    so that the growth follows the solver's fronts and the solver runs once
+//    more, not once per band. Fast marching from the source misjudges which
+//    front wins by up to half an edge (it has no pseudo-sources: fronts that
+//    bend around saddle vertices come out late), far more than any slack that
+//    would not grow E everywhere (teddy_3k v0: 36 rings short).
+// With fast marching as the solver, its passes are the solves.
 template <class TriangleMesh, class FaceIndexMap, class VertexIndexMap, class Builder, class Solver, class Point>
-void grow_and_solve(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_source<TriangleMesh>& src,
-                    VertexIndexMap vim, Builder& builder, const Solver& solver, const Growth_schedule& schedule,
-                    double mean_edge, Extended_surface<Point>& E, std::vector<Face_copies>& face_copies,
-                    std::vector<double>& vertex_distances, Geodesic_ridge_statistics& st,
-                    std::vector<Face_cone>* cones = nullptr,
-                    const std::vector<std::array<double, 3> >& cone_samples = Exact_solver::cone_samples(),
-                    double cones_near_kinks_only = 0)
+class Extension_growth
 {
-  // the copies whose cones are read: the undominated ones, or (angle > 0) those of them near kinks
-  auto cones_wanted = [&](const std::vector<double>& distance) {
-    std::vector<char> keep(E.mesh.number_of_faces(), 0);
-    for(const Face_copies& fc : face_copies)
-      for(std::size_t c : fc.copies) keep[c] = 1;
-    if(cones_near_kinks_only > 0)
+  enum class Pass { predicted, solve, anchored };
+  static constexpr bool solver_is_exact = std::is_same<std::decay_t<Solver>, Exact_solver>::value;
+  static constexpr bool solver_is_fast_marching = std::is_same<std::decay_t<Solver>, Fast_marching_solver>::value;
+
+public:
+  // With `cones`, the solver's cones of the undominated copies are read at
+  // the last solve (at `cone_samples`); with `cones_near_kinks_only` > 0 only
+  // those of copies near kinks of that many degrees (`copies_near_kinks`).
+  Extension_growth(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_source<TriangleMesh>& src,
+                   VertexIndexMap vim, Builder& builder, const Solver& solver, const Growth_schedule& schedule,
+                   double mean_edge, Extended_surface<Point>& E, std::vector<Face_copies>& face_copies,
+                   std::vector<double>& vertex_distances, Geodesic_ridge_statistics& st, Timings& timings,
+                   std::vector<Face_cone>* cones, const std::vector<std::array<double, 3> >& cone_samples,
+                   double cones_near_kinks_only)
+    : tm_(tm), fim_(fim), src_(src), vim_(vim), builder_(builder), solver_(solver), schedule_(schedule),
+      E_(E), face_copies_(face_copies), vertex_distances_(vertex_distances), st_(st), timings_(timings),
+      cones_(cones), cone_samples_(cone_samples), cones_near_kinks_only_(cones_near_kinks_only),
+      across_(faces_across(tm, fim)), fast_marching_slack_(0.02 * mean_edge), exact_slack_(1e-9 * mean_edge)
+  {}
+
+  void run()
+  {
+    pass_ = schedule_.predicted && !solver_is_fast_marching ? Pass::predicted : Pass::solve;
+    bool grown = true;
+    for(;;)
     {
-      const std::vector<char> near = copies_near_kinks(E, corner_distances(E, distance), cones_near_kinks_only);
+      if(grown) timings_.time("extended_surface", [&] { builder_.materialize(E_, src_, vim_, fim_); });
+      run_pass();
+      grown = grows(st_.solves) && grow_band();
+      if(grown)
+      {
+        if(pass_ == Pass::solve && !solver_is_fast_marching && schedule_.predicted) pass_ = Pass::anchored;
+        continue;
+      }
+      // E is final for now: done if the solver has solved it, else solve
+      if(pass_ == Pass::solve || builder_.number_of_copies() == anchor_.size()) break;
+      pass_ = Pass::solve;
+    }
+    // the last solve expected E to grow, and it could not (a leaf's winding
+    // bound): read the cones on E as it is, with one more solve
+    if(cones_ && !cones_read_) read_cones_on_final_surface();
+    st_.ring_cap_hit = st_.outer_copies_winning > 0 && builder_.statistics().rings >= schedule_.maximum_rings;
+  }
+
+private:
+  // One pass: its distances, and what they say (the undominated copies of
+  // every face, the copies still winning on E's border).
+  void run_pass()
+  {
+    distance_.assign(E_.mesh.number_of_vertices(), 0.0);
+    corners_.clear();
+    grow_from_.clear();
+    winning_ = 0;
+    analysed_ = false;
+    timings_.time("solve", [&] { compute_distances(); });
+    if(pass_ == Pass::solve && E_.source_is_vertex && distance_[E_.source_vertex] != 0)
+      throw Algorithm_error("the solver's distance at the source is not 0");
+    analyse();
+    if(pass_ == Pass::solve)
+    {
+      st_.outer_copies_winning = winning_;
+      vertex_distances_ = smallest_over_copies(E_, distance_, num_vertices(tm_));
+      anchor_ = std::move(corners_);
+    }
+  }
+
+  void compute_distances()
+  {
+    if(pass_ == Pass::solve && cones_) solve_reading_cones();
+    else if(pass_ == Pass::solve) { solve_on(E_, solver_, distance_); ++st_.solves; }
+    else if(pass_ == Pass::predicted) { solve_on(E_, Fast_marching_solver(), distance_); ++st_.predicted_passes; }
+    else { fast_marching_from_anchors(E_, anchor_, distance_); ++st_.predicted_passes; }
+  }
+
+  // The cones of the undominated copies, read only at a solve after which E
+  // stays as it is (the solver calls `wanted` once the distances are in).
+  void solve_reading_cones()
+  {
+    std::vector<char> keep;
+    auto wanted = [&](std::size_t copy) {
+      if(keep.empty())
+      {
+        analyse();
+        cones_read_ = !grows(st_.solves + 1);
+        keep = cones_read_ ? cones_wanted(distance_) : std::vector<char>(E_.mesh.number_of_faces(), 0);
+      }
+      return keep[copy] != 0;
+    };
+    solve_on(E_, solver_, distance_, *cones_, wanted, cone_samples_);
+    ++st_.solves;
+  }
+
+  void read_cones_on_final_surface()
+  {
+    std::vector<double> distance(E_.mesh.number_of_vertices());
+    std::vector<char> keep;
+    timings_.time("solve", [&] {
+      solve_on(E_, solver_, distance, *cones_, [&](std::size_t copy) {
+        if(keep.empty()) keep = cones_wanted(distance);
+        return keep[copy] != 0;
+      }, cone_samples_);
+    });
+    ++st_.solves;
+  }
+
+  // the copies whose cones are read: the undominated ones, or those of them near kinks
+  std::vector<char> cones_wanted(const std::vector<double>& distance) const
+  {
+    std::vector<char> keep(E_.mesh.number_of_faces(), 0);
+    for(const Face_copies& fc : face_copies_)
+      for(std::size_t c : fc.copies) keep[c] = 1;
+    if(cones_near_kinks_only_ > 0)
+    {
+      const std::vector<char> near = copies_near_kinks(E_, corner_distances(E_, distance), cones_near_kinks_only_);
       for(std::size_t c = 0; c < keep.size(); ++c) keep[c] = keep[c] && near[c];
     }
     return keep;
-  };
-  const Faces_across across = faces_across(tm, fim);
-  // The growth rule (user manual, "The Solve and the Growth Rule"): E grows a band of
-  // rings around every copy that still comes lowest somewhere on one of its
-  // border edges, until none does. A shortest path that leaves E crosses E's
-  // border where its front is exact, so no copy is lower there: without such
-  // copies E holds every shortest path. Passes on E decide the growth:
-  //  * predicted: fast marching from the source (cheap; most of the growth);
-  //  * solve: the solver (its distances make the ridge; its test is within
-  //    round-off for the exact solver);
-  //  * anchored: after a solve that still found such copies, fast marching on
-  //    the grown E seeded with the solver's distances on the copies it solved,
-  //    so that the growth follows the solver's fronts and the solver runs once
-  //    more, not once per band. Fast marching from the source misjudges which
-  //    front wins by up to half an edge (it has no pseudo-sources: fronts that
-  //    bend around saddle vertices come out late), far more than any slack
-  //    that would not grow E everywhere (teddy_3k v0: 36 rings short).
-  // With fast marching as the solver, its passes are the solves.
-  const double fast_marching_slack = 0.02 * mean_edge; // noise between neighbouring fronts
-  const double exact_slack_on_border = 1e-9 * mean_edge; // round-off
-  const bool solver_is_exact = std::is_same<std::decay_t<Solver>, Exact_solver>::value;
-  const bool solver_is_fast_marching = std::is_same<std::decay_t<Solver>, Fast_marching_solver>::value;
-  enum class Pass { predicted, solve, anchored };
-  Pass pass = schedule.predicted && !solver_is_fast_marching ? Pass::predicted : Pass::solve;
-  bool grown = true;
-  std::vector<std::array<double, 3> > anchor; // per copy, at the last solve: its corner distances
-  bool cones_read = false; // at the last solve, for the copies of E now
-  for(;;)
+  }
+
+  void analyse()
   {
-    auto t0 = std::chrono::steady_clock::now();
-    if(grown) builder.materialize(E, src, vim, fim);
-    grown = false;
-    st.time_extension += seconds_since(t0);
+    if(analysed_) return;
+    timings_.time("envelope_and_dominance", [&] {
+      corners_ = corner_distances(E_, distance_);
+      face_copies_ = undominated_copies(E_, corners_, num_faces(tm_));
+      const double slack = pass_ == Pass::solve && solver_is_exact ? exact_slack_ : fast_marching_slack_;
+      grow_from_ = copies_winning_on_border(across_, E_, face_copies_, slack);
+      winning_ = static_cast<std::size_t>(std::count(grow_from_.begin(), grow_from_.end(), 1));
+    });
+    analysed_ = true;
+  }
 
-    // the pass's distances, and what they say: the undominated copies of
-    // every face, and the copies still winning on E's border
-    std::vector<double> distance(E.mesh.number_of_vertices());
-    std::vector<std::array<double, 3> > corners;
-    std::vector<char> grow_from;
-    std::size_t winning = 0;
-    double analysis_time = 0;
-    bool analysed = false;
-    auto analyse = [&]() {
-      if(analysed) return;
-      const auto ta = std::chrono::steady_clock::now();
-      corners = corner_distances(E, distance);
-      face_copies = undominated_copies(E, corners, num_faces(tm));
-      const double slack = pass == Pass::solve && solver_is_exact ? exact_slack_on_border : fast_marching_slack;
-      grow_from = copies_winning_on_border(across, E, face_copies, slack);
-      winning = static_cast<std::size_t>(std::count(grow_from.begin(), grow_from.end(), 1));
-      analysis_time = seconds_since(ta);
-      analysed = true;
-    };
-    // after this pass, is E grown again (else it is final)?
-    auto grows = [&](int solves_done) {
-      const bool solves_left = pass != Pass::solve || solver_is_fast_marching || solves_done < schedule.maximum_solves;
-      return winning > 0 && solves_left && builder.statistics().rings < schedule.maximum_rings;
-    };
+  // after this pass, is E grown again (else it is final)?
+  bool grows(int solves_done) const
+  {
+    const bool solves_left = pass_ != Pass::solve || solver_is_fast_marching || solves_done < schedule_.maximum_solves;
+    return winning_ > 0 && solves_left && builder_.statistics().rings < schedule_.maximum_rings;
+  }
 
-    t0 = std::chrono::steady_clock::now();
-    if(pass == Pass::solve && cones)
-    {
-      // the cones of the undominated copies, read only at a solve after which
-      // E stays as it is (the solver calls `wanted` once the distances are in)
-      std::vector<char> keep;
-      auto wanted = [&](std::size_t copy) {
-        if(keep.empty())
-        {
-          analyse();
-          cones_read = !grows(st.solves + 1);
-          keep = cones_read ? cones_wanted(distance) : std::vector<char>(E.mesh.number_of_faces(), 0);
-        }
-        return keep[copy] != 0;
-      };
-      solve_on(E, solver, distance, *cones, wanted, cone_samples);
-      ++st.solves;
-    }
-    else if(pass == Pass::solve) { solve_on(E, solver, distance); ++st.solves; }
-    else if(pass == Pass::predicted) { solve_on(E, Fast_marching_solver(), distance); ++st.predicted_passes; }
-    else { fast_marching_from_anchors(E, anchor, distance); ++st.predicted_passes; }
-    st.time_solve += seconds_since(t0) - analysis_time;
-    if(pass == Pass::solve && E.source_is_vertex && distance[E.source_vertex] != 0)
-      throw Algorithm_error("the solver's distance at the source is not 0");
-
-    analyse();
-    st.time_envelope += analysis_time;
-    if(pass == Pass::solve)
-    {
-      st.outer_copies_winning = winning;
-      vertex_distances = smallest_over_copies(E, distance, num_vertices(tm));
-      anchor = std::move(corners);
-    }
-
-    // grow a band of `extension_step` rings around them (each ring from the
-    // copies the previous one added), unless E is final
-    if(grows(st.solves))
-    {
-      t0 = std::chrono::steady_clock::now();
-      const std::size_t before_band = builder.number_of_copies();
-      // a band of at least `extension_step` rings, and half the depth reached:
-      // a front that crossed a badly placed cut may win far beyond it (knot_3k
-      // v304: along the whole tube behind a rung), reached in O(log) passes
-      const int band = std::max(schedule.extension_step, builder.statistics().rings / 2);
-      for(int step = 0; step < band && builder.statistics().rings < schedule.maximum_rings; ++step)
+  // A band of rings around the copies still winning (each ring from the copies
+  // the previous one added): at least `extension_step` rings, and half the
+  // depth reached, since a front that crossed a badly placed cut may win far
+  // beyond it (knot_3k v304: along the whole tube behind a rung), reached in
+  // O(log) passes. Whether E grew (not at a leaf's winding bound).
+  bool grow_band()
+  {
+    return timings_.time("extended_surface", [&] {
+      const std::size_t before_band = builder_.number_of_copies();
+      const int band = std::max(schedule_.extension_step, builder_.statistics().rings / 2);
+      for(int step = 0; step < band && builder_.statistics().rings < schedule_.maximum_rings; ++step)
       {
-        const std::size_t before = builder.number_of_copies();
-        builder.grow_ring(&grow_from);
-        grow_from.assign(builder.number_of_copies(), 0);
-        for(std::size_t c = before; c < builder.number_of_copies(); ++c) grow_from[c] = 1;
+        const std::size_t before = builder_.number_of_copies();
+        builder_.grow_ring(&grow_from_);
+        grow_from_.assign(builder_.number_of_copies(), 0);
+        for(std::size_t c = before; c < builder_.number_of_copies(); ++c) grow_from_[c] = 1;
       }
-      if(schedule.guided) builder.grow_guided(schedule.maximum_rings);
-      grown = builder.number_of_copies() > before_band; // not at a leaf's winding bound
-      st.time_extension += seconds_since(t0);
-    }
-    if(grown)
-    {
-      if(pass == Pass::solve && !solver_is_fast_marching && schedule.predicted) pass = Pass::anchored;
-      continue;
-    }
-    // E is final for now: done if the solver has solved it, else solve
-    if(pass == Pass::solve || builder.number_of_copies() == anchor.size()) break;
-    pass = Pass::solve;
+      if(schedule_.guided) builder_.grow_guided(schedule_.maximum_rings);
+      return builder_.number_of_copies() > before_band;
+    });
   }
-  if(cones && !cones_read)
-  {
-    // the last solve expected E to grow, and it could not (a leaf's winding
-    // bound): read the cones on E as it is, with one more solve
-    std::vector<double> distance(E.mesh.number_of_vertices());
-    std::vector<char> keep;
-    const auto t0 = std::chrono::steady_clock::now();
-    solve_on(E, solver, distance, *cones, [&](std::size_t copy) {
-      if(keep.empty()) keep = cones_wanted(distance);
-      return keep[copy] != 0;
-    }, cone_samples);
-    ++st.solves;
-    st.time_solve += seconds_since(t0);
-  }
-  st.ring_cap_hit = st.outer_copies_winning > 0 && builder.statistics().rings >= schedule.maximum_rings;
-}
 
-template <class TriangleMesh, class NamedParameters>
-auto ridge_curve_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src, const NamedParameters& np)
+  const TriangleMesh& tm_;
+  const FaceIndexMap fim_;
+  const Geodesic_source<TriangleMesh>& src_;
+  const VertexIndexMap vim_;
+  Builder& builder_;
+  const Solver& solver_;
+  const Growth_schedule schedule_;
+  Extended_surface<Point>& E_;
+  std::vector<Face_copies>& face_copies_;
+  std::vector<double>& vertex_distances_;
+  Geodesic_ridge_statistics& st_;
+  Timings& timings_;
+  std::vector<Face_cone>* const cones_;
+  const std::vector<std::array<double, 3> >& cone_samples_;
+  const double cones_near_kinks_only_;
+  const Faces_across across_;
+  // a copy that wins on the border by less than this is no winner: noise
+  // between neighbouring fronts (fast marching), round-off (the exact solver)
+  const double fast_marching_slack_, exact_slack_;
+  Pass pass_ = Pass::solve;
+  std::vector<std::array<double, 3> > anchor_; // per copy, at the last solve: its corner distances
+  bool cones_read_ = false; // at the last solve, for the copies of E now
+  // the pass's distances and their analysis
+  std::vector<double> distance_;
+  std::vector<std::array<double, 3> > corners_;
+  std::vector<char> grow_from_;
+  std::size_t winning_ = 0;
+  bool analysed_ = false;
+};
+
+// The named parameters of the pipeline beyond those of stage 1, checked.
+struct Pipeline_options
+{
+  int initial_rings, extension_step, maximum_rings, maximum_solves;
+  double minimum_angle, kink_angle, cone_ridge_tolerance;
+  bool guided, tree_from_solver, predicted;
+  Field field;
+};
+
+template <class NamedParameters, class Solver>
+Pipeline_options pipeline_options(const NamedParameters& np, const Solver& solver)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const auto t_start = std::chrono::steady_clock::now();
+  Pipeline_options o;
+  o.initial_rings = choose_parameter(get_parameter(np, internal_np::initial_rings_t()), 3);
+  o.minimum_angle = choose_parameter(get_parameter(np, internal_np::minimum_spur_angle_t()), 15.0);
+  o.kink_angle = choose_parameter(get_parameter(np, internal_np::kink_angle_t()), default_kink_angle);
+  o.extension_step = choose_parameter(get_parameter(np, internal_np::extension_step_t()), 4);
+  o.maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), default_maximum_rings);
+  o.maximum_solves = choose_parameter(get_parameter(np, internal_np::maximum_solves_t()), default_maximum_solves);
+  o.guided = choose_parameter(get_parameter(np, internal_np::guided_extension_t()), false);
+  o.field = choose_parameter(get_parameter(np, internal_np::field_t()), Field::linear);
+  if(o.field == Field::cone && !std::is_same<std::decay_t<Solver>, Exact_solver>::value)
+    throw Invalid_parameter_error(std::string("the cone field needs the exact solver, not '") + solver.name() + "'");
+  o.cone_ridge_tolerance = get_number_in_range<internal_np::cone_ridge_tolerance_t>(
+      np, default_cone_ridge_tolerance, std::numeric_limits<double>::min(), 1, false, "cone ridge tolerance", "(0, 1]");
+  o.tree_from_solver = o.guided || choose_parameter(get_parameter(np, internal_np::tree_from_solver_t()), false);
+  if(o.initial_rings < 0 || o.maximum_rings < o.initial_rings || o.extension_step < 1)
+    throw Invalid_parameter_error("extension rings: need 0 <= initial_rings <= maximum_rings and extension_step >= 1");
+  if(o.maximum_solves < 1) throw Invalid_parameter_error("maximum_solves must be at least 1");
+  o.predicted = !o.guided && choose_parameter(get_parameter(np, internal_np::predicted_extension_t()), true);
+  return o;
+}
+
+// The pipeline as its named steps, in the manual's order: the distances on M
+// that shape the tree, stage 1, the extended surface grown and solved on
+// (stage 2), the kink split, the envelopes and the ridge (stage 2c and 3),
+// and the cone ridge. Each step is timed here, in `Ridge_curve::timings`.
+template <class TriangleMesh, class NamedParameters, class Solver, class VertexPointMap, class VertexIndexMap,
+          class FaceIndexMap, class EdgeIndexMap>
+class Geodesic_ridge_pipeline
+{
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  typedef Extended_surface_builder<TriangleMesh, VertexPointMap, VertexIndexMap, FaceIndexMap, EdgeIndexMap> Builder;
+  static constexpr bool solver_is_exact = std::is_same<std::decay_t<Solver>, Exact_solver>::value;
+
+public:
+  Geodesic_ridge_pipeline(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, const NamedParameters& np,
+                          const Solver& solver, VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim,
+                          EdgeIndexMap eim)
+    : tm_(tm), src_(src), np_(np), solver_(solver), options_(pipeline_options(np, solver)), vpm_(vpm), vim_(vim),
+      fim_(fim), eim_(eim), st_(result_.statistics), timings_(result_.timings)
+  {}
+
+  Ridge_curve<TriangleMesh, Point> run()
+  {
+    st_.solver = solver_.name();
+    const std::vector<double> field = timings_.time("tree_distances", [&] { return distances_on_mesh(); });
+    timings_.time("rough_cut_locus", [&] { rough_cut_locus(field); });
+    mean_edge_ = mean_edge_length();
+    Builder builder(tm_, result_.rough_cut_locus, vpm_, vim_, fim_, eim_);
+    timings_.time("extended_surface", [&] { initial_extension(builder, field); });
+    grow_and_solve(builder);
+    timings_.time("ridge_assembly", [&] { assemble_ridge(); });
+    check_ridge_topology();
+    if(options_.field == Field::cone) timings_.time("cone_ridge", [&] { trace_cones(); });
+    return std::move(result_);
+  }
+
+private:
+  // Stage 1 follows a tree that descends a geodesic distance on M (see
+  // `Rough_cut_locus_builder::descend_field`): fast marching, or the solver itself.
+  std::vector<double> distances_on_mesh()
+  {
+    std::vector<double> field(num_vertices(tm_));
+    st_.tree_from_solver = options_.tree_from_solver;
+    if(options_.tree_from_solver)
+    {
+      auto field_map = boost::make_iterator_property_map(field.begin(), vim_);
+      const auto geometry = CGAL::parameters::vertex_point_map(vpm_);
+      if(src_.kind == Geodesic_source<TriangleMesh>::ON_VERTEX) solver_(tm_, src_.vertex, field_map, geometry);
+      else solver_(tm_, src_.location, field_map, geometry);
+    }
+    else
+      fast_marching_distances(tm_, vpm_, vim_, src_.seeds, field);
+    return field;
+  }
+
+  void rough_cut_locus(const std::vector<double>& field)
+  {
+    result_.rough_cut_locus = rough_cut_locus_impl(tm_, src_, np_, &field);
+    st_.tolerance = result_.rough_cut_locus.tolerance;
+    st_.rough_cut_locus = result_.rough_cut_locus.statistics;
+  }
+
+  double mean_edge_length() const
+  {
+    double sum = 0;
+    for(auto e : edges(tm_)) sum += distance_between(vpm_, source(e, tm_), target(e, tm_));
+    return sum / static_cast<double>(num_edges(tm_));
+  }
+
+  // Rings everywhere, then, with guided growth, wherever a front is still
+  // exact beyond the cut (a predicted or solved distance within 0.05 mean
+  // edges of the exact one counts as exact).
+  void initial_extension(Builder& builder, const std::vector<double>& field)
+  {
+    if(options_.guided) builder.set_exact_distance(&field, 0.05 * mean_edge_, result_.rough_cut_locus);
+    for(int r = 0; r < options_.initial_rings; ++r) builder.grow_ring();
+    if(options_.guided) builder.grow_guided(options_.maximum_rings);
+  }
+
+  // Stage 2: solve, extend again only where copies on the border of E still
+  // win, solve again. The exact solver's cones tell the fronts of a copy's
+  // corners apart (kinks inside one sheet). They are read only near copies
+  // whose linear field bends by a quarter of the kink angle against a glued
+  // copy's: measured on 6 sources of bunny_1k, armadillo_2k and teddy_3k, the
+  // same ridges (a few split copies fewer, recall and precision unchanged), in
+  // half the time on 10k-face meshes (path queries for every copy cost about
+  // one more solve).
+  void grow_and_solve(Builder& builder)
+  {
+    const double kink_filter_share = 0.25;
+    const bool cone_field = options_.field == Field::cone;
+    const Growth_schedule schedule{options_.extension_step, options_.maximum_rings, options_.maximum_solves,
+                                   options_.predicted, options_.guided};
+    Extension_growth<TriangleMesh, FaceIndexMap, VertexIndexMap, Builder, Solver, Point>(
+        tm_, fim_, src_, vim_, builder, solver_, schedule, mean_edge_, E_, face_copies_, result_.vertex_distances, st_,
+        timings_, cone_field || split_at_kinks() ? &copy_cones_ : nullptr, cone_samples(),
+        cone_field ? 0 : kink_filter_share * options_.kink_angle)
+        .run();
+    st_.extended_surface = E_.statistics;
+    if(!cone_field) return;
+    const std::size_t samples = Exact_solver::cone_samples().size();
+    result_.cones.assign(num_faces(tm_), {});
+    for(std::size_t f = 0; f < face_copies_.size(); ++f)
+      for(std::size_t c : face_copies_[f].copies)
+        for(std::size_t i = 0; i < samples; ++i) result_.cones[f].push_back(copy_cones_[samples * c + i]);
+  }
+
+  bool split_at_kinks() const { return solver_is_exact && options_.kink_angle > 0; }
+  const std::vector<std::array<double, 3> >& cone_samples() const
+  {
+    return options_.field == Field::cone ? Exact_solver::cone_samples() : Exact_solver::corner_samples();
+  }
+
+  // Stage 2c + 3: copies split at kinks, exact envelopes and the ridge curve.
+  void assemble_ridge()
+  {
+    std::size_t split_copies = 0;
+    const std::vector<Face_copies> fronts_of_faces =
+        split_at_kinks() ? Kink_splitter<TriangleMesh, VertexPointMap, FaceIndexMap, Point>(
+                               tm_, vpm_, fim_, E_, copy_cones_, cone_samples(), options_.kink_angle,
+                               mean_edge_)(face_copies_, split_copies)
+                         : face_copies_;
+    assemble_ridge_curve(tm_, E_, fronts_of_faces, mean_edge_, options_.minimum_angle, options_.kink_angle, vpm_,
+                         vim_, fim_, eim_, result_.polylines, result_.regions, st_.ridge);
+    st_.ridge.split_copies = split_copies;
+  }
+
+  void check_ridge_topology() const
+  {
+    const std::size_t cycles = static_cast<std::size_t>(2 * result_.rough_cut_locus.statistics.genus);
+    if(st_.ridge.components != 1 || st_.ridge.cycles != cycles)
+      throw Algorithm_error("the ridge has " + std::to_string(st_.ridge.components) + " components and " +
+                            std::to_string(st_.ridge.cycles) + " cycles; expected 1 and 2g = " +
+                            std::to_string(cycles));
+  }
+
+  void trace_cones()
+  {
+    result_.cone_polylines = trace_cone_ridge(tm_, vpm_, fim_, result_.polylines, result_.cones,
+                                              options_.cone_ridge_tolerance * mean_edge_, mean_edge_, st_.cone_ridge);
+  }
+
+  const TriangleMesh& tm_;
+  const Geodesic_source<TriangleMesh> src_;
+  const NamedParameters& np_;
+  const Solver solver_;
+  const Pipeline_options options_;
+  const VertexPointMap vpm_;
+  const VertexIndexMap vim_;
+  const FaceIndexMap fim_;
+  const EdgeIndexMap eim_;
+  Ridge_curve<TriangleMesh, Point> result_;
+  Geodesic_ridge_statistics& st_;
+  Timings& timings_;
+  double mean_edge_ = 0;
+  Extended_surface<Point> E_;
+  std::vector<Face_copies> face_copies_;
+  std::vector<Face_cone> copy_cones_;
+};
+
+template <class TriangleMesh, class NamedParameters>
+auto ridge_curve_impl(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  const auto eim = CGAL::get_initialized_edge_index_map(tm, np);
-  typedef typename boost::property_traits<std::decay_t<decltype(vpm)> >::value_type Point;
   const auto solver = choose_parameter(get_parameter(np, internal_np::solver_t()), Exact_solver());
-  const int initial_rings = choose_parameter(get_parameter(np, internal_np::initial_rings_t()), 3);
-  const double minimum_angle = choose_parameter(get_parameter(np, internal_np::minimum_spur_angle_t()), 15.0);
-  const double kink_angle = choose_parameter(get_parameter(np, internal_np::kink_angle_t()), default_kink_angle);
-  const int extension_step = choose_parameter(get_parameter(np, internal_np::extension_step_t()), 4);
-  const int maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), default_maximum_rings);
-  const int maximum_solves = choose_parameter(get_parameter(np, internal_np::maximum_solves_t()), default_maximum_solves);
-  const bool guided = choose_parameter(get_parameter(np, internal_np::guided_extension_t()), false);
-  const Field field_kind = choose_parameter(get_parameter(np, internal_np::field_t()), Field::linear);
-  if(field_kind == Field::cone && !std::is_same<std::decay_t<decltype(solver)>, Exact_solver>::value)
-    throw Invalid_parameter_error(std::string("the cone field needs the exact solver, not '") + solver.name() + "'");
-  const double cone_ridge_tolerance = get_number_in_range<internal_np::cone_ridge_tolerance_t>(
-      np, default_cone_ridge_tolerance, std::numeric_limits<double>::min(), 1, false, "cone ridge tolerance", "(0, 1]");
-  const bool tree_from_solver =
-      guided || choose_parameter(get_parameter(np, internal_np::tree_from_solver_t()), false);
-  if(initial_rings < 0 || maximum_rings < initial_rings || extension_step < 1)
-    throw Invalid_parameter_error(
-        "extension rings: need 0 <= initial_rings <= maximum_rings and extension_step >= 1");
-  if(maximum_solves < 1) throw Invalid_parameter_error("maximum_solves must be at least 1");
-  const bool predicted =
-      !guided && choose_parameter(get_parameter(np, internal_np::predicted_extension_t()), true);
-
-  Ridge_curve<TriangleMesh, Point> result;
-  Geodesic_ridge_statistics& st = result.statistics;
-  st.solver = solver.name();
-
-  // Stage 1, on the tree that descends a geodesic distance on M (see
-  // rough_cut_locus_impl): fast marching, or the solver itself
-  auto t0 = std::chrono::steady_clock::now();
-  std::vector<double> field(num_vertices(tm));
-  st.tree_from_solver = tree_from_solver;
-  if(tree_from_solver)
-  {
-    auto field_map = boost::make_iterator_property_map(field.begin(), vim);
-    if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX) solver(tm, src.vertex, field_map);
-    else solver(tm, src.location, field_map);
-  }
-  else
-    fast_marching_distances(tm, vpm, vim, src.seeds, field);
-  st.time_solve_on_mesh = seconds_since(t0);
-  t0 = std::chrono::steady_clock::now();
-  result.rough_cut_locus = rough_cut_locus_impl(tm, src, np, &field);
-  const Rough_cut_locus<TriangleMesh>& rcl = result.rough_cut_locus;
-  st.tolerance = rcl.tolerance;
-  st.rough_cut_locus = rcl.statistics;
-  st.time_rough_cut_locus = seconds_since(t0);
-
-  double mean_edge = 0;
-  for(auto e : edges(tm)) mean_edge += distance_between(vpm, source(e, tm), target(e, tm));
-  mean_edge /= static_cast<double>(num_edges(tm));
-  // a predicted or solved distance within this of the exact one counts as exact
-  const double exact_slack = 0.05 * mean_edge;
-
-  // Stage 2: extend (rings everywhere, then, with guided growth, wherever a
-  // front is still exact beyond the cut), solve; extend again only where
-  // copies on the border of E still win, and solve again.
-  t0 = std::chrono::steady_clock::now();
-  Extended_surface_builder<TriangleMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(vim)>,
-                           std::decay_t<decltype(fim)>, std::decay_t<decltype(eim)> >
-      builder(tm, rcl, vpm, vim, fim, eim);
-  if(guided) builder.set_exact_distance(&field, exact_slack, rcl);
-  for(int r = 0; r < initial_rings; ++r) builder.grow_ring();
-  if(guided) builder.grow_guided(maximum_rings);
-  st.time_extension += seconds_since(t0);
-
-  Extended_surface<Point> E;
-  std::vector<Face_copies> face_copies;
-  const Growth_schedule schedule{extension_step, maximum_rings, maximum_solves, predicted, guided};
-  std::vector<Face_cone> copy_cones;
-  // the exact solver's cones tell the fronts of a copy's corners apart (kinks
-  // inside one sheet). They are read only near copies whose linear field bends
-  // by a quarter of the kink angle against a glued copy's: measured on 6
-  // sources of bunny_1k, armadillo_2k and teddy_3k, the same ridges (a few
-  // split copies fewer, recall and precision unchanged), in half the time on
-  // 10k-face meshes (path queries for every copy cost about one more solve).
-  const double kink_filter_share = 0.25;
-  const bool split_at_kinks = std::is_same<std::decay_t<decltype(solver)>, Exact_solver>::value && kink_angle > 0;
-  const auto& cone_samples = field_kind == Field::cone ? Exact_solver::cone_samples() : Exact_solver::corner_samples();
-  grow_and_solve(tm, fim, src, vim, builder, solver, schedule, mean_edge, E, face_copies, result.vertex_distances, st,
-                 field_kind == Field::cone || split_at_kinks ? &copy_cones : nullptr, cone_samples,
-                 field_kind == Field::cone ? 0 : kink_filter_share * kink_angle);
-  st.extended_surface = E.statistics;
-  if(field_kind == Field::cone)
-  {
-    result.cones.assign(num_faces(tm), {});
-    for(std::size_t f = 0; f < face_copies.size(); ++f)
-      for(std::size_t c : face_copies[f].copies)
-        for(std::size_t i = 0; i < Exact_solver::cone_samples().size(); ++i)
-          result.cones[f].push_back(copy_cones[Exact_solver::cone_samples().size() * c + i]);
-  }
-
-  // Stage 2c + 3: exact envelopes and the ridge curve
-  t0 = std::chrono::steady_clock::now();
-  std::size_t split_copies = 0;
-  const std::vector<Face_copies> fronts_of_faces =
-      split_at_kinks ? Kink_splitter<TriangleMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(fim)>, Point>(
-                           tm, vpm, fim, E, copy_cones, cone_samples, kink_angle, mean_edge)(face_copies, split_copies)
-                     : face_copies;
-  assemble_ridge_curve(tm, E, fronts_of_faces, mean_edge, minimum_angle, kink_angle, vpm, vim, fim, eim, result.polylines,
-                       result.regions, st.ridge);
-  st.ridge.split_copies = split_copies;
-  st.time_assembly = seconds_since(t0);
-  st.ridge.time = st.time_assembly;
-  if(st.ridge.components != 1 || st.ridge.cycles != static_cast<std::size_t>(2 * rcl.statistics.genus))
-    throw Algorithm_error("the ridge has " + std::to_string(st.ridge.components) + " components and " +
-                          std::to_string(st.ridge.cycles) + " cycles; expected 1 and 2g = " +
-                          std::to_string(2 * rcl.statistics.genus));
-  if(field_kind == Field::cone)
-    result.cone_polylines = trace_cone_ridge(tm, vpm, fim, result.polylines, result.cones,
-                                             cone_ridge_tolerance * mean_edge, mean_edge, st.cone_ridge);
-  st.time_total = seconds_since(t_start);
-  return result;
+  return Geodesic_ridge_pipeline(tm, src, np, solver, vpm, CGAL::get_initialized_vertex_index_map(tm, np),
+                                 CGAL::get_initialized_face_index_map(tm, np),
+                                 CGAL::get_initialized_edge_index_map(tm, np))
+      .run();
 }
 
 } // namespace internal

@@ -37,7 +37,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -57,8 +56,6 @@ struct Cone_ridge_statistics
   std::size_t points_kept = 0;     ///< at vertices, free ends, or without two fronts in the face
   std::size_t points_added = 0;    ///< inserted so that the chords follow the curve
   double largest_move = 0;         ///< the largest distance a point moved, in mean edge lengths
-  /// seconds spent tracing the cone ridge
-  double time = 0;
 };
 
 namespace internal {
@@ -192,7 +189,6 @@ public:
       for(auto& p : pl)
         for(double& b : p.barycentric)
           if(std::abs(b) <= rounded_zero) b = 0;
-    const auto t0 = std::chrono::steady_clock::now();
     st.tolerance = tolerance_;
     // one point of the ridge, rounded in two faces, comes twice this close
     const double same_point = 1e-9 * mean_edge_;
@@ -230,7 +226,6 @@ public:
         out.push_back(moved[i]);
       }
     }
-    st.time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return result;
   }
 

@@ -15,6 +15,7 @@
 #define GEODESIC_RIDGE_EXTENDED_SURFACE_H
 
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/rough_cut_locus.h>
 
 #include <CGAL/Surface_mesh.h>
@@ -22,7 +23,6 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <array>
-#include <chrono>
 #include <cstdint>
 #include <limits>
 #include <numeric>
@@ -49,8 +49,6 @@ struct Extended_surface_statistics
   std::size_t guided_faces = 0;         ///< copies added by the growth guided by the exact distance on M
   int guided_rings = 0;                 ///< rings the guided growth took (its deepest copy)
   bool guided_ring_cap_hit = false;     ///< the guided growth stopped at the ring cap
-  /// seconds spent by `build_extended_surface()`
-  double time = 0;
 };
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -148,86 +146,14 @@ public:
                            VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim)
     : tm_(tm), vpm_(vpm), vim_(vim), fim_(fim)
   {
-    const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
-    corner_.resize(nf);
-    across_.resize(nf);
-    across_edge_.resize(nf);
-    edge_cut_.resize(nf);
-    vertex_of_.resize(nv);
-    for(vertex_descriptor v : vertices(tm)) vertex_of_[get(vim, v)] = v;
-    degree_.assign(nv, 0);
-    for(face_descriptor f : faces(tm))
-    {
-      const std::uint32_t fi = static_cast<std::uint32_t>(get(fim, f));
-      halfedge_descriptor h = halfedge(f, tm);
-      for(int k = 0; k < 3; ++k, h = next(h, tm))
-      {
-        corner_[fi][k] = static_cast<std::uint32_t>(get(vim, source(h, tm)));
-        ++degree_[corner_[fi][k]];
-        const halfedge_descriptor o = opposite(h, tm);
-        const face_descriptor g = face(o, tm);
-        across_[fi][k] = static_cast<std::uint32_t>(get(fim, g));
-        std::uint8_t kk = 0;
-        for(halfedge_descriptor x = halfedge(g, tm); x != o; x = next(x, tm)) ++kk;
-        across_edge_[fi][k] = kk;
-        edge_cut_[fi][k] = rcl.is_cut_edge[get(eim, edge(h, tm))] != 0;
-      }
-    }
-    // The disk D: one copy per face, glued across every edge not in K.
-    copies_.resize(nf);
-    for(std::uint32_t f = 0; f < nf; ++f)
-    {
-      Copy& c = copies_[f];
-      c.face = f;
-      c.ring = 0;
-      for(int k = 0; k < 3; ++k)
-      {
-        c.corner[k] = none;
-        if(edge_cut_[f][k]) c.nb[k] = none;
-        else { c.nb[k] = across_[f][k]; c.nb_edge[k] = across_edge_[f][k]; }
-      }
-    }
-    // Vertex copies of D: one per sector between consecutive cut edges.
+    index_faces(rcl, eim);
+    make_disk();
+    const std::size_t nf = num_faces(tm);
     for(std::uint32_t f = 0; f < nf; ++f)
       for(int k = 0; k < 3; ++k)
-      {
-        if(copies_[f].corner[k] != none) continue;
-        // walk backwards (prev) around the vertex to the start of the sector
-        std::uint32_t g = f;
-        int kg = k;
-        const std::uint32_t v = corner_[f][k];
-        std::uint32_t steps = 0;
-        while(!edge_cut_[g][(kg + 2) % 3] && steps < degree_[v])
-        {
-          const std::uint32_t p = across_[g][(kg + 2) % 3];
-          const int kp = position_of(p, v);
-          g = p;
-          kg = kp;
-          ++steps;
-        }
-        const bool closed = (steps == degree_[v]) && !edge_cut_[g][(kg + 2) % 3];
-        const std::uint32_t id = new_vertex_copy(v, g);
-        Fan& fan = fans_[id];
-        fan.size = 0;
-        // walk forwards (next) to the end of the sector
-        std::uint32_t h = g;
-        int kh = kg;
-        for(;;)
-        {
-          copies_[h].corner[kh] = id;
-          ++fan.size;
-          fan.last = h;
-          if(fan.size == degree_[v] || edge_cut_[h][kh]) break;
-          const std::uint32_t n = across_[h][kh];
-          kh = position_of(n, v);
-          h = n;
-        }
-        fan.closed = closed;
-        fan.leaf = !closed && fan.size == degree_[v]; // one sector holding the whole star: a leaf of K
-        if(fan.leaf) ++stats_.number_of_leaf_vertices;
-      }
+        if(copies_[f].corner[k] == none) make_vertex_copy_of_sector(f, k);
     stats_.faces_per_ring.push_back(nf);
-    on_cut_.assign(nv, 0);
+    on_cut_.assign(num_vertices(tm), 0);
     for(std::uint32_t f = 0; f < nf; ++f)
       for(int k = 0; k < 3; ++k)
         if(edge_cut_[f][k]) on_cut_[corner_[f][k]] = on_cut_[corner_[f][(k + 1) % 3]] = 1;
@@ -302,91 +228,25 @@ public:
     stats_.guided_rings = std::max(stats_.guided_rings, deepest);
   }
 
+  /// Writes E as a `Surface_mesh`: its vertices (one per merged vertex copy),
+  /// its glued halfedges, its faces (one per copy) and its border, then the
+  /// source in it.
   template <class Point>
   void materialize(Extended_surface<Point>& E, const Geodesic_source<TriangleMesh>& src,
                    VertexIndexMap vim, FaceIndexMap fim)
   {
     typedef typename Extended_surface<Point>::Mesh Mesh;
-    typedef typename Mesh::Vertex_index   V;
-    typedef typename Mesh::Halfedge_index H;
-    typedef typename Mesh::Face_index     F;
-    Mesh& m = E.mesh;
-    m.clear();
-    const std::size_t nc = copies_.size();
-    std::vector<std::uint32_t> evertex(uf_parent_.size(), none);
-    E.original_vertex.clear();
-    for(std::uint32_t c = 0; c < nc; ++c)
-      for(int k = 0; k < 3; ++k)
-      {
-        const std::uint32_t root = find(copies_[c].corner[k]);
-        if(evertex[root] == none)
-        {
-          evertex[root] = static_cast<std::uint32_t>(m.number_of_vertices());
-          m.add_vertex(get(vpm_, vertex_of_[fans_[root].vertex]));
-          E.original_vertex.push_back(fans_[root].vertex);
-        }
-      }
+    E.mesh.clear();
+    const std::vector<std::uint32_t> evertex = add_vertices(E);
     // halfedge (c, k) runs from corner k to corner k+1 of copy c
-    std::vector<std::array<H, 3> > he(nc);
-    for(std::uint32_t c = 0; c < nc; ++c)
-      for(int k = 0; k < 3; ++k)
-      {
-        const Copy& cc = copies_[c];
-        if(cc.nb[k] != none && cc.nb[k] < c) continue; // created from the other side
-        const H h = m.add_edge();
-        he[c][k] = h;
-        if(cc.nb[k] != none) he[cc.nb[k]][cc.nb_edge[k]] = m.opposite(h);
-      }
-    E.original_face.resize(nc);
-    E.ring.resize(nc);
-    auto vtx = [&](std::uint32_t c, int k) { return V(evertex[find(copies_[c].corner[k % 3])]); };
-    for(std::uint32_t c = 0; c < nc; ++c)
-    {
-      const F f = m.add_face();
-      E.original_face[c] = copies_[c].face;
-      E.ring[c] = copies_[c].ring;
-      m.set_halfedge(f, he[c][0]);
-      for(int k = 0; k < 3; ++k)
-      {
-        const H h = he[c][k];
-        m.set_face(h, f);
-        m.set_target(h, vtx(c, k + 1));
-        m.set_next(h, he[c][(k + 1) % 3]);
-        m.set_halfedge(vtx(c, k + 1), h);
-      }
-    }
-    // border halfedges: opposite of (c, k) unglued, from corner k+1 to corner k;
-    // its next leaves corner k at the other end of that vertex copy's fan.
-    for(std::uint32_t c = 0; c < nc; ++c)
-      for(int k = 0; k < 3; ++k)
-      {
-        if(copies_[c].nb[k] != none) continue;
-        const H b = m.opposite(he[c][k]);
-        const std::uint32_t u = find(copies_[c].corner[k]);
-        m.set_face(b, Mesh::null_face());
-        m.set_target(b, vtx(c, k));
-        const std::uint32_t first = fans_[u].first;
-        const int kf = position_of_copy(first, u);
-        m.set_next(b, m.opposite(he[first][(kf + 2) % 3]));
-        m.set_halfedge(vtx(c, k), b);
-      }
-    if(!CGAL::is_valid_polygon_mesh(m))
+    const std::vector<std::array<typename Mesh::Halfedge_index, 3> > he = add_edges(E.mesh);
+    add_faces(E, evertex, he);
+    link_border(E.mesh, evertex, he);
+    if(!CGAL::is_valid_polygon_mesh(E.mesh))
       throw Algorithm_error("the extended surface is not a valid polygon mesh");
-
-    E.source_is_vertex = (src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX);
-    E.source_location.first = F(static_cast<typename Mesh::size_type>(get(fim, src.location.first)));
-    E.source_location.second = src.location.second;
-    if(E.source_is_vertex)
-    {
-      // Looked up now that the mesh is final: vertex numbering changes as copies merge.
-      const std::uint32_t sv = static_cast<std::uint32_t>(get(vim, src.vertex));
-      const std::uint32_t f = static_cast<std::uint32_t>(get(fim, src.location.first));
-      E.source_vertex = vtx(f, position_of(f, sv));
-      if(E.original_vertex[E.source_vertex] != sv || CGAL::is_border(E.source_vertex, m))
-        throw Algorithm_error("the source is not an interior vertex of the extended surface");
-    }
-    stats_.number_of_faces = m.number_of_faces();
-    stats_.number_of_vertices = m.number_of_vertices();
+    place_source(E, src, vim, fim, evertex);
+    stats_.number_of_faces = E.mesh.number_of_faces();
+    stats_.number_of_vertices = E.mesh.number_of_vertices();
     E.statistics = stats_;
   }
 
@@ -394,6 +254,200 @@ public:
   std::size_t number_of_copies() const { return copies_.size(); }
 
 private:
+  // Per face: its corners, the face and edge across each edge, whether that
+  // edge is cut; per vertex its degree.
+  template <class EdgeIndexMap_>
+  void index_faces(const Rough_cut_locus<TriangleMesh>& rcl, EdgeIndexMap_ eim)
+  {
+    const std::size_t nv = num_vertices(tm_), nf = num_faces(tm_);
+    corner_.resize(nf);
+    across_.resize(nf);
+    across_edge_.resize(nf);
+    edge_cut_.resize(nf);
+    vertex_of_.resize(nv);
+    for(vertex_descriptor v : vertices(tm_)) vertex_of_[get(vim_, v)] = v;
+    degree_.assign(nv, 0);
+    for(face_descriptor f : faces(tm_))
+    {
+      const std::uint32_t fi = static_cast<std::uint32_t>(get(fim_, f));
+      halfedge_descriptor h = halfedge(f, tm_);
+      for(int k = 0; k < 3; ++k, h = next(h, tm_))
+      {
+        corner_[fi][k] = static_cast<std::uint32_t>(get(vim_, source(h, tm_)));
+        ++degree_[corner_[fi][k]];
+        const halfedge_descriptor o = opposite(h, tm_);
+        const face_descriptor g = face(o, tm_);
+        across_[fi][k] = static_cast<std::uint32_t>(get(fim_, g));
+        std::uint8_t kk = 0;
+        for(halfedge_descriptor x = halfedge(g, tm_); x != o; x = next(x, tm_)) ++kk;
+        across_edge_[fi][k] = kk;
+        edge_cut_[fi][k] = rcl.is_cut_edge[get(eim, edge(h, tm_))] != 0;
+      }
+    }
+  }
+
+  // The disk D: one copy per face, glued across every edge not in K.
+  void make_disk()
+  {
+    const std::size_t nf = num_faces(tm_);
+    copies_.resize(nf);
+    for(std::uint32_t f = 0; f < nf; ++f)
+    {
+      Copy& c = copies_[f];
+      c.face = f;
+      c.ring = 0;
+      for(int k = 0; k < 3; ++k)
+      {
+        c.corner[k] = none;
+        if(edge_cut_[f][k]) c.nb[k] = none;
+        else { c.nb[k] = across_[f][k]; c.nb_edge[k] = across_edge_[f][k]; }
+      }
+    }
+  }
+
+  // A vertex copy of D: one per sector between consecutive cut edges around a
+  // vertex, here the sector of corner k of face f.
+  void make_vertex_copy_of_sector(std::uint32_t f, int k)
+  {
+    // walk backwards (prev) around the vertex to the start of the sector
+    std::uint32_t g = f;
+    int kg = k;
+    const std::uint32_t v = corner_[f][k];
+    std::uint32_t steps = 0;
+    while(!edge_cut_[g][(kg + 2) % 3] && steps < degree_[v])
+    {
+      const std::uint32_t p = across_[g][(kg + 2) % 3];
+      kg = position_of(p, v);
+      g = p;
+      ++steps;
+    }
+    const bool closed = (steps == degree_[v]) && !edge_cut_[g][(kg + 2) % 3];
+    const std::uint32_t id = new_vertex_copy(v, g);
+    Fan& fan = fans_[id];
+    fan.size = 0;
+    // walk forwards (next) to the end of the sector
+    std::uint32_t h = g;
+    int kh = kg;
+    for(;;)
+    {
+      copies_[h].corner[kh] = id;
+      ++fan.size;
+      fan.last = h;
+      if(fan.size == degree_[v] || edge_cut_[h][kh]) break;
+      const std::uint32_t n = across_[h][kh];
+      kh = position_of(n, v);
+      h = n;
+    }
+    fan.closed = closed;
+    fan.leaf = !closed && fan.size == degree_[v]; // one sector holding the whole star: a leaf of K
+    if(fan.leaf) ++stats_.number_of_leaf_vertices;
+  }
+
+  // the vertex of E at corner k of copy c
+  template <class Mesh>
+  typename Mesh::Vertex_index vertex_at(const std::vector<std::uint32_t>& evertex, std::uint32_t c, int k)
+  {
+    return typename Mesh::Vertex_index(evertex[find(copies_[c].corner[k % 3])]);
+  }
+
+  // one vertex of E per merged vertex copy, in order of first use; returns
+  // the vertex of E of every root vertex copy
+  template <class Point>
+  std::vector<std::uint32_t> add_vertices(Extended_surface<Point>& E)
+  {
+    std::vector<std::uint32_t> evertex(vertex_copies_.size(), none);
+    E.original_vertex.clear();
+    for(std::uint32_t c = 0; c < copies_.size(); ++c)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::uint32_t root = find(copies_[c].corner[k]);
+        if(evertex[root] != none) continue;
+        evertex[root] = static_cast<std::uint32_t>(E.mesh.number_of_vertices());
+        E.mesh.add_vertex(get(vpm_, vertex_of_[fans_[root].vertex]));
+        E.original_vertex.push_back(fans_[root].vertex);
+      }
+    return evertex;
+  }
+
+  // one edge of E per glued pair of copy edges or border copy edge
+  template <class Mesh>
+  std::vector<std::array<typename Mesh::Halfedge_index, 3> > add_edges(Mesh& m) const
+  {
+    std::vector<std::array<typename Mesh::Halfedge_index, 3> > he(copies_.size());
+    for(std::uint32_t c = 0; c < copies_.size(); ++c)
+      for(int k = 0; k < 3; ++k)
+      {
+        const Copy& cc = copies_[c];
+        if(cc.nb[k] != none && cc.nb[k] < c) continue; // created from the other side
+        const auto h = m.add_edge();
+        he[c][k] = h;
+        if(cc.nb[k] != none) he[cc.nb[k]][cc.nb_edge[k]] = m.opposite(h);
+      }
+    return he;
+  }
+
+  template <class Point, class Halfedges>
+  void add_faces(Extended_surface<Point>& E, const std::vector<std::uint32_t>& evertex, const Halfedges& he)
+  {
+    typedef typename Extended_surface<Point>::Mesh Mesh;
+    Mesh& m = E.mesh;
+    E.original_face.resize(copies_.size());
+    E.ring.resize(copies_.size());
+    for(std::uint32_t c = 0; c < copies_.size(); ++c)
+    {
+      const typename Mesh::Face_index f = m.add_face();
+      E.original_face[c] = copies_[c].face;
+      E.ring[c] = copies_[c].ring;
+      m.set_halfedge(f, he[c][0]);
+      for(int k = 0; k < 3; ++k)
+      {
+        const auto h = he[c][k];
+        m.set_face(h, f);
+        m.set_target(h, vertex_at<Mesh>(evertex, c, k + 1));
+        m.set_next(h, he[c][(k + 1) % 3]);
+        m.set_halfedge(vertex_at<Mesh>(evertex, c, k + 1), h);
+      }
+    }
+  }
+
+  // border halfedges: opposite of (c, k) unglued, from corner k+1 to corner k;
+  // its next leaves corner k at the other end of that vertex copy's fan.
+  template <class Mesh, class Halfedges>
+  void link_border(Mesh& m, const std::vector<std::uint32_t>& evertex, const Halfedges& he)
+  {
+    for(std::uint32_t c = 0; c < copies_.size(); ++c)
+      for(int k = 0; k < 3; ++k)
+      {
+        if(copies_[c].nb[k] != none) continue;
+        const auto b = m.opposite(he[c][k]);
+        const std::uint32_t u = find(copies_[c].corner[k]);
+        m.set_face(b, Mesh::null_face());
+        m.set_target(b, vertex_at<Mesh>(evertex, c, k));
+        const std::uint32_t first = fans_[u].first;
+        const int kf = position_of_copy(first, u);
+        m.set_next(b, m.opposite(he[first][(kf + 2) % 3]));
+        m.set_halfedge(vertex_at<Mesh>(evertex, c, k), b);
+      }
+  }
+
+  template <class Point>
+  void place_source(Extended_surface<Point>& E, const Geodesic_source<TriangleMesh>& src, VertexIndexMap vim,
+                    FaceIndexMap fim, const std::vector<std::uint32_t>& evertex)
+  {
+    typedef typename Extended_surface<Point>::Mesh Mesh;
+    E.source_is_vertex = (src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX);
+    E.source_location.first =
+        typename Mesh::Face_index(static_cast<typename Mesh::size_type>(get(fim, src.location.first)));
+    E.source_location.second = src.location.second;
+    if(!E.source_is_vertex) return;
+    // Looked up now that the mesh is final: vertex numbering changes as copies merge.
+    const std::uint32_t sv = static_cast<std::uint32_t>(get(vim, src.vertex));
+    const std::uint32_t f = static_cast<std::uint32_t>(get(fim, src.location.first));
+    E.source_vertex = vertex_at<Mesh>(evertex, f, position_of(f, sv));
+    if(E.original_vertex[E.source_vertex] != sv || CGAL::is_border(E.source_vertex, E.mesh))
+      throw Algorithm_error("the source is not an interior vertex of the extended surface");
+  }
+
   int position_of(std::uint32_t f, std::uint32_t v) const
   {
     return corner_[f][0] == v ? 0 : (corner_[f][1] == v ? 1 : 2);
@@ -404,15 +458,11 @@ private:
       if(find(copies_[c].corner[k]) == root) return k;
     return 0;
   }
-  std::uint32_t find(std::uint32_t x)
-  {
-    while(uf_parent_[x] != x) { uf_parent_[x] = uf_parent_[uf_parent_[x]]; x = uf_parent_[x]; }
-    return x;
-  }
+  // a vertex copy's id after merges: the id its merged set keeps
+  std::uint32_t find(std::uint32_t x) const { return static_cast<std::uint32_t>(vertex_copies_.find(x)); }
   std::uint32_t new_vertex_copy(std::uint32_t v, std::uint32_t first)
   {
-    const std::uint32_t id = static_cast<std::uint32_t>(uf_parent_.size());
-    uf_parent_.push_back(id);
+    const std::uint32_t id = static_cast<std::uint32_t>(vertex_copies_.add());
     fans_.push_back(Fan{v, first, first, 1, false, false});
     return id;
   }
@@ -643,7 +693,7 @@ private:
       glue(L, eL, F, eF);
       fans_[x].closed = true;
       ++stats_.number_of_closures;
-      uf_parent_[zL] = zF; // zF stays the root
+      vertex_copies_.unite_into(zL, zF); // the merged copy keeps zF's id
       fans_[zF].last = b.last;
       fans_[zF].size = a.size + b.size;
       fans_[zF].leaf = a.leaf || b.leaf;
@@ -681,7 +731,7 @@ private:
   std::vector<std::array<bool, 3> > edge_cut_;
   std::vector<std::uint32_t> degree_;
   std::vector<Copy> copies_;
-  std::vector<std::uint32_t> uf_parent_;
+  Union_find vertex_copies_; // vertex copies merged by closing fans
   std::vector<Fan> fans_;
   std::vector<Unfolding> unfold_; // per copy (entries of D copies unused)
   std::vector<char> on_cut_, shadowed_; // per vertex of M
@@ -744,7 +794,6 @@ build_extended_surface(const TriangleMesh& tm, const Rough_cut_locus<TriangleMes
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const auto t0 = std::chrono::steady_clock::now();
   if(rings < 0) throw Invalid_parameter_error("the number of extension rings must be non-negative");
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, tm));
@@ -758,7 +807,6 @@ build_extended_surface(const TriangleMesh& tm, const Rough_cut_locus<TriangleMes
   for(int r = 0; r < rings; ++r) builder.grow_ring();
   Extended_surface<Point> E;
   builder.materialize(E, rcl.source, vim, fim);
-  E.statistics.time = internal::seconds_since(t0);
   return E;
 }
 

@@ -87,8 +87,6 @@ struct Ridge_curve_statistics
   //@}
   /// the ridge's total length
   double total_length = 0;
-  /// seconds spent in stages 2c and 3
-  double time = 0;
 };
 
 namespace internal {

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Stage 1: the rough cut locus (DESIGN.md §2, paper §3.1).
+// Stage 1: the rough cut locus (the manual's "Stage 1: The Rough Cut Locus", paper §3.1).
 //
 //   Dijkstra shortest-path tree T  ->  dual T* of the non-tree edges
 //   -> significance of every dual edge  -> pruning by tolerance
@@ -17,6 +17,7 @@
 #include <Geodesic_ridge/mesh_validation.h>
 #include <Geodesic_ridge/parameters.h>
 #include <Geodesic_ridge/source.h>
+#include <Geodesic_ridge/timings.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -28,7 +29,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -44,7 +44,7 @@ namespace Geodesic_ridge {
 /// What a mesh edge is to the rough cut locus.
 enum class Edge_role : unsigned char
 {
-  shortest_path_tree, ///< an edge of the Dijkstra shortest-path tree T
+  shortest_path_tree, ///< an edge of the shortest-path tree T
   source_face,        ///< an edge of a face holding the source (never crossed by T*)
   dual_pruned,        ///< crossed by an edge of T* whose significance is below the tolerance
   dual_kept,          ///< crossed by an edge of T* that survives the pruning
@@ -55,19 +55,21 @@ enum class Edge_role : unsigned char
 };
 
 /// \ingroup PkgGeodesicRidgeRef
-/// Counts and timings of stage 1 (seconds).
+/// Counts of stage 1.
 struct Rough_cut_locus_statistics
 {
-  int genus = 0;
-  std::size_t number_of_vertices = 0, number_of_edges = 0, number_of_faces = 0;
+  int genus = 0;                          ///< the genus g of the mesh, from its Euler characteristic
+  std::size_t number_of_vertices = 0;     ///< vertices of the mesh
+  std::size_t number_of_edges = 0;        ///< edges of the mesh
+  std::size_t number_of_faces = 0;        ///< faces of the mesh
   std::size_t number_of_dual_edges = 0;      ///< |T*| = F' - 1 + 2g (F' = faces not holding the source)
   std::size_t number_of_core_dual_edges = 0; ///< dual edges on the 2-core (significance = total area)
-  std::size_t number_of_kept_dual_edges = 0;
+  std::size_t number_of_kept_dual_edges = 0; ///< dual edges that survive the pruning (the kept dual structure)
   std::size_t number_of_kept_dual_leaves = 0; ///< faces with exactly one kept dual edge
   std::size_t number_of_extended_dual_leaves = 0; ///< same, with the leaf extension edges too
   std::size_t number_of_leaf_extension_edges = 0; ///< pruned dual edges added to extend kept leaves
   std::size_t number_of_cut_edges = 0;        ///< |K|
-  std::size_t number_of_cut_vertices = 0;
+  std::size_t number_of_cut_vertices = 0;    ///< vertices of K
   std::size_t number_of_cut_leaves = 0;       ///< vertices of degree 1 in K
   std::size_t cut_cycle_rank = 0;             ///< |K| - |V(K)| + 1; equals 2g
   std::size_t number_of_closing_rungs = 0;    ///< rungs added back to close the 2g cycles
@@ -75,8 +77,6 @@ struct Rough_cut_locus_statistics
   std::size_t number_of_curvature_pruned_dual_edges = 0; ///< kept dual edges of false branches (see `branch_curvature`)
   std::size_t number_of_corner_moves = 0;     ///< leaves of K moved back onto a corner (large curvature), and corners joined to K
   bool fallback_single_rung = false;          ///< no dual edge reached the tolerance: K is the best rung
-  double time_shortest_path_tree = 0, time_significance = 0, time_cut_graph = 0,
-         time_disk_check = 0, time_total = 0;
 };
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -86,16 +86,17 @@ struct Rough_cut_locus_statistics
 template <class TriangleMesh>
 struct Rough_cut_locus
 {
-  typedef boost::graph_traits<TriangleMesh>   GT;
-  typedef typename GT::vertex_descriptor     vertex_descriptor;
-  typedef typename GT::edge_descriptor       edge_descriptor;
-  typedef typename GT::face_descriptor       face_descriptor;
+  typedef boost::graph_traits<TriangleMesh>   GT;                ///< the graph traits of `TriangleMesh`
+  typedef typename GT::vertex_descriptor     vertex_descriptor; ///< a vertex of the mesh
+  typedef typename GT::edge_descriptor       edge_descriptor;   ///< an edge of the mesh
+  typedef typename GT::face_descriptor       face_descriptor;   ///< a face of the mesh
 
-  Geodesic_source<TriangleMesh> source;
-  double tolerance = default_tolerance;
-  double total_area = 0;
+  Geodesic_source<TriangleMesh> source; ///< the source, validated (`make_source()`)
+  double tolerance = default_tolerance; ///< the significance tolerance used (a fraction of the total area)
+  double total_area = 0;                ///< the total area of the mesh (the unit of the tolerance)
 
-  /// Dijkstra distance along mesh edges (per vertex)
+  /// the distance the tree follows (per vertex): Dijkstra's along mesh edges,
+  /// or inside the pipeline the geodesic field it was given
   std::vector<double> distance;
   /// predecessor in the shortest-path tree T (per vertex; a root is its own parent)
   std::vector<vertex_descriptor> parent;
@@ -113,21 +114,20 @@ struct Rough_cut_locus
   std::vector<edge_descriptor> kept_dual_edges;
   /// pruned ones that extend leaves of the kept dual structure, by increasing edge index
   std::vector<edge_descriptor> leaf_extension_edges;
-  /// edges of K that are no rungs: paths that join a corner to K (see the leaves
-  /// at corners in rough_cut_locus.h), by increasing edge index
+  /// edges of K that are no rungs: paths that join a corner to K (the leaves
+  /// at corners, \ref GeodesicRidgeSecStage1), by increasing edge index
   std::vector<edge_descriptor> corner_path_edges;
   /// the primal cut graph K, by increasing edge index
   std::vector<edge_descriptor> cut_edges;
 
-  Rough_cut_locus_statistics statistics;
+  Rough_cut_locus_statistics statistics; ///< counts of stage 1
+  /// seconds per step: `shortest_path_tree`, `significance` (the dual and the
+  /// significance of its edges), `cut_graph` (the pruning and K), `disk_check`
+  /// (K connected with cycle rank 2g, the cut surface a disk)
+  Timings timings;
 };
 
 namespace internal {
-
-inline double seconds_since(std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // Stage 1 as its named steps (the manual's order), over the state they share.
 // `run()` calls them in order; each step reads what the steps before it left.
@@ -159,43 +159,36 @@ public:
   // the tree then follows it (`descend_field`) instead of Dijkstra's edge distances.
   Rough_cut_locus<TriangleMesh> run(const std::vector<double>* field = nullptr)
   {
-    const auto t_start = std::chrono::steady_clock::now();
-    auto t0 = t_start;
-    count_elements();
-    // 1. the shortest-path tree T
-    shortest_path_tree();
-    if(field != nullptr) descend_field(*field);
-    st_.time_shortest_path_tree = seconds_since(t0);
-    // 2. the dual T* and the significance of its edges
-    t0 = std::chrono::steady_clock::now();
-    classify_edges();
-    measure_face_areas();
-    build_dual_adjacency();
-    share_curvature_among_faces();
-    peel_significance();
-    st_.time_significance = seconds_since(t0);
-    // 3. pruning, then the primal cut graph K
-    t0 = std::chrono::steady_clock::now();
-    prune_by_significance();
-    prune_false_branches();
-    if(!st_.fallback_single_rung && options_.leaf_curvature > 0) extend_leaves_by_curvature();
-    else if(!st_.fallback_single_rung && options_.leaf_extension < 1) extend_leaves_by_significance();
-    record_dual_roles();
-    span_rungs();
-    close_handle_cycles();
-    remove_teeth();
-    if(!st_.fallback_single_rung && options_.leaf_curvature > 0)
-    {
-      move_leaves_onto_corners();
-      join_corners();
-    }
-    collect_cut_edges();
-    st_.time_cut_graph = seconds_since(t0);
-    // 4. the check that cutting along K gives a disk
-    t0 = std::chrono::steady_clock::now();
-    check_disk();
-    st_.time_disk_check = seconds_since(t0);
-    st_.time_total = seconds_since(t_start);
+    Timings& timings = r_.timings;
+    timings.time("shortest_path_tree", [&] {
+      count_elements();
+      shortest_path_tree();
+      if(field != nullptr) descend_field(*field);
+    });
+    timings.time("significance", [&] {
+      classify_edges();
+      measure_face_areas();
+      build_dual_adjacency();
+      share_curvature_among_faces();
+      peel_significance();
+    });
+    timings.time("cut_graph", [&] {
+      prune_by_significance();
+      prune_false_branches();
+      if(!st_.fallback_single_rung && options_.leaf_curvature > 0) extend_leaves_by_curvature();
+      else if(!st_.fallback_single_rung && options_.leaf_extension < 1) extend_leaves_by_significance();
+      record_dual_roles();
+      span_rungs();
+      close_handle_cycles();
+      remove_teeth();
+      if(!st_.fallback_single_rung && options_.leaf_curvature > 0)
+      {
+        move_leaves_onto_corners();
+        join_corners();
+      }
+      collect_cut_edges();
+    });
+    timings.time("disk_check", [&] { check_disk(); });
     return std::move(r_);
   }
 
@@ -1021,16 +1014,68 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 } // namespace internal
 
 /// \ingroup PkgGeodesicRidgeRef
-/// Computes the rough cut locus of `source` on the closed triangle mesh `tm`.
+/// Computes the rough cut locus of `source` on the closed triangle mesh `tm`:
+/// the shortest-path tree, the significance of the edges of its dual, the
+/// pruning by `tolerance`, and the cut graph K (\ref GeodesicRidgeSecStage1).
 ///
-/// \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph`-free
-///         `HalfedgeListGraph` (e.g. `CGAL::Surface_mesh`), closed, connected, manifold.
-/// \param tm the mesh; it is validated first (`Invalid_mesh_error` if not supported)
-/// \param source a vertex of `tm` (`Invalid_source_error` otherwise)
-/// \param np an optional sequence of named parameters:
-///   `Geodesic_ridge::parameters::tolerance(t)` (default 0.025, in [0, 0.5),
-///   else `Invalid_parameter_error`), and CGAL's `vertex_point_map`,
-///   `vertex_index_map`, `edge_index_map`, `face_index_map`.
+/// \tparam TriangleMesh a model of `FaceListGraph` (`CGAL::Surface_mesh`, for example)
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param tm the mesh
+/// \param source a vertex of `tm`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \pre `tm` is a closed, connected, manifold, consistently oriented triangle
+///      mesh with finite coordinates, no isolated vertex, no duplicate face and
+///      no zero-area face (checked first by `validate_triangle_mesh()`:
+///      `Invalid_mesh_error` otherwise).
+/// \pre `source` is a vertex of `tm` (`Invalid_source_error` otherwise).
+/// \pre Every named parameter is in its range (`Invalid_parameter_error`
+///      otherwise, thrown before any work).
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{tolerance}
+///     \cgalParamDescription{the dual edges whose significance is at least this fraction of the total area are kept}
+///     \cgalParamType{`double`, in [0, 0.5)}
+///     \cgalParamDefault{`default_tolerance` (0.025)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{branch_curvature}
+///     \cgalParamDescription{degrees: kept branches of the dual tree that enclose less Gaussian curvature are false and pruned back; 0 is the paper's pruning}
+///     \cgalParamType{`double`, in [0, 720]}
+///     \cgalParamDefault{`default_branch_curvature` (15)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{leaf_curvature}
+///     \cgalParamDescription{degrees: pruned branches that hold this much Gaussian curvature are kept, so that the cut graph reaches the tips of the ridge, and its leaves are moved onto corners; 0 turns both off}
+///     \cgalParamType{`double`, in [0, 720]}
+///     \cgalParamDefault{`default_leaf_curvature` (45)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{leaf_extension}
+///     \cgalParamDescription{with `leaf_curvature(0)`: leaves of the kept structure go on along their most significant pruned branch while it holds this fraction of the tolerance}
+///     \cgalParamType{`double`, in [0, 1]}
+///     \cgalParamDefault{`default_leaf_extension` (1: no extension)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and a 3D point as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and `num_vertices(tm) - 1`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_index_map}
+///     \cgalParamDescription{a property map associating to each edge of `tm` a unique index between `0` and `num_edges(tm) - 1`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index between `0` and `num_faces(tm) - 1`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
 /// \post cutting `tm` along `cut_edges` gives one topological disk with the
 ///       source strictly inside; `Algorithm_error` is thrown if it ever does not.
 template <class TriangleMesh,
@@ -1049,6 +1094,11 @@ compute_rough_cut_locus(const TriangleMesh& tm,
 /// Same, from a surface point given as a `Face_location` (face + barycentric
 /// coordinates in CGAL's order). A location on an edge or a vertex is handled
 /// as such.
+///
+/// \pre the face is a face of `tm` and the coordinates are finite,
+///      non-negative and sum to 1 within 1e-9 (`Invalid_source_error` otherwise).
+///
+/// The other preconditions and the named parameters are those of the first overload.
 template <class TriangleMesh, class FT,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Rough_cut_locus<TriangleMesh>
@@ -1066,6 +1116,27 @@ compute_rough_cut_locus(const TriangleMesh& tm,
 /// Writes the cut graph K as polylines (`std::vector<Point_3>`) to `out`, one
 /// per chain between vertices of K whose degree is not 2 (closed chains repeat
 /// their first point).
+///
+/// \tparam OutputIterator an output iterator accepting `std::vector<Point_3>`
+/// \param tm the mesh
+/// \param rcl the rough cut locus of a source on `tm`
+/// \param out where the polylines go
+/// \param np an optional sequence of named parameters among the ones listed below
+/// \returns `out` past the last polyline
+/// \pre `rcl` was computed on `tm` with the same vertex index map.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and a 3D point as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and `num_vertices(tm) - 1`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <class TriangleMesh, class OutputIterator,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 OutputIterator cut_graph_polylines(const TriangleMesh& tm, const Rough_cut_locus<TriangleMesh>& rcl,

@@ -27,16 +27,21 @@ public:
 
   /// Writes the distance from vertex `s` to every vertex `v` of `tm` with `put(distance, v, d)`.
   /// `VertexDistanceMap` is a writable property map from vertices to `double`.
-  template <class TriangleMesh, class VertexDistanceMap>
+  /// The geometry is that of the named parameter `vertex_point_map` of `np`
+  /// (default: the mesh's own points); the pipeline passes the user's map, so
+  /// that every stage sees the same geometry.
+  template <class TriangleMesh, class VertexDistanceMap, class NamedParameters>
   void operator()(const TriangleMesh& tm,
                   typename boost::graph_traits<TriangleMesh>::vertex_descriptor s,
-                  VertexDistanceMap distance) const;
+                  VertexDistanceMap distance,
+                  const NamedParameters& np = CGAL::parameters::default_values()) const;
 
   /// Same from a surface point: a face and its barycentric coordinates, in the order
   /// `source(halfedge(f))`, `target(halfedge(f))`, `target(next(halfedge(f)))`.
-  template <class TriangleMesh, class FT, class VertexDistanceMap>
+  template <class TriangleMesh, class FT, class VertexDistanceMap, class NamedParameters>
   void operator()(const TriangleMesh& tm,
                   const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
                                   std::array<FT, 3> >& source,
-                  VertexDistanceMap distance) const;
+                  VertexDistanceMap distance,
+                  const NamedParameters& np = CGAL::parameters::default_values()) const;
 };

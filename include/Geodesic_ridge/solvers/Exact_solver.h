@@ -7,11 +7,14 @@
 #define GEODESIC_RIDGE_SOLVERS_EXACT_SOLVER_H
 
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/version.h>
 #include <CGAL/Surface_mesh_shortest_path.h>
 
 #include <array>
 #include <cmath>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -39,33 +42,41 @@ struct Exact_solver
   /// "exact"
   static const char* name() { return "exact"; }
 
-  /// Distances from vertex `s` of `tm` to every vertex, written to `distance`.
-  template <class TriangleMesh, class VertexDistanceMap>
+  /// Distances from vertex `s` of `tm` to every vertex, written to `distance`,
+  /// on the geometry of the named parameter `vertex_point_map` (default: the
+  /// mesh's own points).
+  template <class TriangleMesh, class VertexDistanceMap,
+            class NamedParameters = CGAL::parameters::Default_named_parameters>
   void operator()(const TriangleMesh& tm,
                   typename boost::graph_traits<TriangleMesh>::vertex_descriptor s,
-                  VertexDistanceMap distance) const
+                  VertexDistanceMap distance,
+                  const NamedParameters& np = CGAL::parameters::default_values()) const
   {
-    SMSP<TriangleMesh> sp(tm);
-    add_source(tm, sp, s);
-    solve(tm, sp, distance);
+    with_shortest_paths(tm, np, [&](auto& sp) {
+      add_source(tm, sp, s);
+      solve(tm, sp, distance);
+    });
   }
 
   /// Distances from the point `loc` (face + barycentric coordinates, CGAL's order).
   /// With \cgal before 5.6, a point on an edge is moved into its face by 2^-40
   /// of the barycentric range (\cgal issue 6681: no cone towards the ends of
   /// the source's edge), which changes distances by about 1e-13 of an edge.
-  template <class TriangleMesh, class FT, class VertexDistanceMap>
+  template <class TriangleMesh, class FT, class VertexDistanceMap,
+            class NamedParameters = CGAL::parameters::Default_named_parameters>
   void operator()(const TriangleMesh& tm,
                   const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
                                   std::array<FT, 3> >& loc,
-                  VertexDistanceMap distance) const
+                  VertexDistanceMap distance,
+                  const NamedParameters& np = CGAL::parameters::default_values()) const
   {
-    SMSP<TriangleMesh> sp(tm);
-    add_source(tm, sp, loc);
-    solve(tm, sp, distance);
+    with_shortest_paths(tm, np, [&](auto& sp) {
+      add_source(tm, sp, loc);
+      solve(tm, sp, distance);
+    });
   }
 
-  /// Same, and the cones of the faces: `cones[S * i + j]` is the cone of the
+  /// Same (on the mesh's own points), and the cones of the faces: `cones[S * i + j]` is the cone of the
   /// face of index i (`face_index`) at its sample point j
   /// (`cone_samples()`, S of them), read from the shortest path from that
   /// point (its first straight piece and the distance at its first bend), for
@@ -121,6 +132,22 @@ private:
       TriangleMesh>;
   template <class TriangleMesh>
   using SMSP = CGAL::Surface_mesh_shortest_path<Traits<TriangleMesh> >;
+
+  // Calls f with CGAL's shortest-path solver on `tm` with the point map of `np`.
+  template <class TriangleMesh, class NamedParameters, class F>
+  static void with_shortest_paths(const TriangleMesh& tm, const NamedParameters& np, const F& f)
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, tm));
+    typedef std::decay_t<decltype(vpm)> Vertex_point_map;
+    typedef typename CGAL::Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel K;
+    CGAL::Surface_mesh_shortest_path<CGAL::Surface_mesh_shortest_path_traits<K, TriangleMesh>, CGAL::Default,
+                                     CGAL::Default, CGAL::Default, Vertex_point_map>
+        sp(tm, get(boost::vertex_index, tm), get(boost::halfedge_index, tm), get(boost::face_index, tm), vpm);
+    f(sp);
+  }
 
   template <class TriangleMesh, class Solver>
   static void add_source(const TriangleMesh&, Solver& sp,

@@ -136,36 +136,42 @@ struct Fast_marching_solver
   static const char* name() { return "fmm"; }
 
   /// Distances from vertex `s` of `tm` to every vertex, written to `distance`
-  /// (infinity where unreachable).
-  template <class TriangleMesh, class VertexDistanceMap>
+  /// (infinity where unreachable), on the geometry of the named parameter
+  /// `vertex_point_map` (default: the mesh's own points).
+  template <class TriangleMesh, class VertexDistanceMap,
+            class NamedParameters = CGAL::parameters::Default_named_parameters>
   void operator()(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor s,
-                  VertexDistanceMap distance) const
+                  VertexDistanceMap distance, const NamedParameters& np = CGAL::parameters::default_values()) const
   {
-    run(tm, make_source(tm, s, CGAL::parameters::default_values()).seeds, distance);
+    run(tm, make_source(tm, s, np).seeds, distance, np);
   }
 
   /// Distances from the point `loc` (face + barycentric coordinates, CGAL's
   /// order): the vertices of the faces that hold it start at their
   /// straight-line distances.
-  template <class TriangleMesh, class FT, class VertexDistanceMap>
+  template <class TriangleMesh, class FT, class VertexDistanceMap,
+            class NamedParameters = CGAL::parameters::Default_named_parameters>
   void operator()(const TriangleMesh& tm,
                   const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
                                   std::array<FT, 3> >& loc,
-                  VertexDistanceMap distance) const
+                  VertexDistanceMap distance, const NamedParameters& np = CGAL::parameters::default_values()) const
   {
     // the corners start at their straight-line distances from the point (a
     // point on an edge or at a vertex seeds that feature's neighbourhood)
-    const auto seeds = make_source(tm, loc, CGAL::parameters::default_values()).seeds;
-    run(tm, seeds, distance);
+    run(tm, make_source(tm, loc, np).seeds, distance, np);
   }
 
 private:
-  template <class TriangleMesh, class Seeds, class VertexDistanceMap>
-  static void run(const TriangleMesh& tm, const Seeds& seeds, VertexDistanceMap distance)
+  template <class TriangleMesh, class Seeds, class VertexDistanceMap, class NamedParameters>
+  static void run(const TriangleMesh& tm, const Seeds& seeds, VertexDistanceMap distance, const NamedParameters& np)
   {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
     const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, tm));
     std::vector<double> d;
-    internal::fast_marching_distances(tm, get(CGAL::vertex_point, tm), vim, seeds, d);
+    internal::fast_marching_distances(tm, vpm, vim, seeds, d);
     for(auto v : vertices(tm)) put(distance, v, d[get(vim, v)]);
   }
 };
