@@ -97,27 +97,14 @@ typedef CGAL::Gmpq Exact_number;
 template <class Point_3>
 std::array<double, 3> field_gradient(const std::array<Point_3, 3>& p, const std::array<double, 3>& d)
 {
-  double e[3][3];
-  for(int k = 0; k < 3; ++k)
-  {
-    const Point_3& a = p[(k + 1) % 3];
-    const Point_3& b = p[(k + 2) % 3];
-    e[k][0] = b.x() - a.x(); e[k][1] = b.y() - a.y(); e[k][2] = b.z() - a.z();
-  }
-  // N = e2 x (-e1) = (p1 - p0) x (p2 - p0)
-  const double ux = p[1].x() - p[0].x(), uy = p[1].y() - p[0].y(), uz = p[1].z() - p[0].z();
-  const double vx = p[2].x() - p[0].x(), vy = p[2].y() - p[0].y(), vz = p[2].z() - p[0].z();
-  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-  const double nn = nx * nx + ny * ny + nz * nz; // (2A)^2
-  std::array<double, 3> g = {{0, 0, 0}};
-  for(int k = 0; k < 3; ++k)
-  {
-    // grad λ_k = (N x e_k) / (2A)^2 * |N|/|N| ... with N unnormalized: (N x e_k) / |N|^2
-    const double cx = ny * e[k][2] - nz * e[k][1], cy = nz * e[k][0] - nx * e[k][2],
-                 cz = nx * e[k][1] - ny * e[k][0];
-    g[0] += d[k] * cx / nn; g[1] += d[k] * cy / nn; g[2] += d[k] * cz / nn;
-  }
-  return g;
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 Vector;
+  // N = (p1 - p0) x (p2 - p0), |N|^2 = (2A)^2
+  const Vector n = CGAL::cross_product(p[1] - p[0], p[2] - p[0]);
+  const double nn = CGAL::to_double(n.squared_length());
+  Vector g = CGAL::NULL_VECTOR;
+  // grad λ_k = (N x e_k) / |N|^2, e_k the edge opposite corner k
+  for(int k = 0; k < 3; ++k) g = g + CGAL::cross_product(n, p[(k + 2) % 3] - p[(k + 1) % 3]) * d[k] / nn;
+  return {{CGAL::to_double(g.x()), CGAL::to_double(g.y()), CGAL::to_double(g.z())}};
 }
 
 /// What stage 3 needs of one original face.

@@ -68,10 +68,7 @@ namespace internal {
 template <class VPM, class Key>
 double distance_between(const VPM& vpm, const Key& a, const Key& b)
 {
-  const auto& p = get(vpm, a);
-  const auto& q = get(vpm, b);
-  const double dx = p.x() - q.x(), dy = p.y() - q.y(), dz = p.z() - q.z();
-  return std::sqrt(dx * dx + dy * dy + dz * dz);
+  return std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, a), get(vpm, b))));
 }
 
 } // namespace internal
@@ -173,16 +170,10 @@ make_face_source(const TriangleMesh& tm,
   Geodesic_source<TriangleMesh> s;
   s.location.first = f;
   s.location.second = w;
-  const auto& p0 = get(vpm, c[0]);
-  const auto& p1 = get(vpm, c[1]);
-  const auto& p2 = get(vpm, c[2]);
-  const double px = w[0] * p0.x() + w[1] * p1.x() + w[2] * p2.x();
-  const double py = w[0] * p0.y() + w[1] * p1.y() + w[2] * p2.y();
-  const double pz = w[0] * p0.z() + w[1] * p1.z() + w[2] * p2.z();
+  const auto o = CGAL::ORIGIN;
+  const auto p = o + ((get(vpm, c[0]) - o) * w[0] + (get(vpm, c[1]) - o) * w[1] + (get(vpm, c[2]) - o) * w[2]);
   auto dist_to = [&](vertex_descriptor v) {
-    const auto& q = get(vpm, v);
-    const double dx = q.x() - px, dy = q.y() - py, dz = q.z() - pz;
-    return std::sqrt(dx * dx + dy * dy + dz * dz);
+    return std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, v), p)));
   };
   s.faces.push_back(f);
   for(int i = 0; i < 3; ++i) s.seeds.emplace_back(c[i], dist_to(c[i]));

@@ -10,6 +10,7 @@
 
 #include <CGAL/number_type_config.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/Kernel/global_functions.h>
 
 #include <array>
 #include <cmath>
@@ -46,12 +47,9 @@ Corner_angles corner_angles(const TriangleMesh& tm, const VertexPointMap& vpm, c
       const auto& o = get(vpm, source(h[k], tm));
       const auto& a = get(vpm, target(h[k], tm));
       const auto& b = get(vpm, source(h[(k + 2) % 3], tm));
-      const double ux = CGAL::to_double(a.x() - o.x()), uy = CGAL::to_double(a.y() - o.y()),
-                   uz = CGAL::to_double(a.z() - o.z());
-      const double vx = CGAL::to_double(b.x() - o.x()), vy = CGAL::to_double(b.y() - o.y()),
-                   vz = CGAL::to_double(b.z() - o.z());
-      const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-      const double angle = std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ux * vx + uy * vy + uz * vz);
+      const auto u = a - o, v = b - o;
+      const double angle = std::atan2(std::sqrt(CGAL::to_double(CGAL::cross_product(u, v).squared_length())),
+                                      CGAL::to_double(u * v));
       r.angle[get(fim, f)][k] = angle;
       r.angle_sum[get(vim, source(h[k], tm))] += angle;
     }

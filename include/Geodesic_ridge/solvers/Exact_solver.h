@@ -271,32 +271,23 @@ private:
           continue;
         }
         catch(const Apex_found&) {}
-        const double w[3] = {CGAL::to_double(bend.towards.x() - q.x()), CGAL::to_double(bend.towards.y() - q.y()),
-                             CGAL::to_double(bend.towards.z() - q.z())};
-        const double wl = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        const auto w = bend.towards - q;
+        const double wl = std::sqrt(CGAL::to_double(w.squared_length()));
         cone.offset = bend.apex_distance;
         if(wl == 0) continue; // the sample is the apex
-        const double apex[3] = {CGAL::to_double(q.x()) + bend.length * w[0] / wl,
-                                CGAL::to_double(q.y()) + bend.length * w[1] / wl,
-                                CGAL::to_double(q.z()) + bend.length * w[2] / wl};
-        cone.apex = barycentric_in_plane(p, apex);
+        cone.apex = barycentric_in_plane(p, q + w * bend.length / wl);
       }
     }
   }
 
   // Barycentric coordinates of x (in the plane of triangle p) in the triangle.
   template <class Point_3>
-  static std::array<double, 3> barycentric_in_plane(const Point_3 (&p)[3], const double (&x)[3])
+  static std::array<double, 3> barycentric_in_plane(const Point_3 (&p)[3], const Point_3& x)
   {
-    double a[3], b[3], c[3];
-    const double p0[3] = {CGAL::to_double(p[0].x()), CGAL::to_double(p[0].y()), CGAL::to_double(p[0].z())};
-    const double p1[3] = {CGAL::to_double(p[1].x()), CGAL::to_double(p[1].y()), CGAL::to_double(p[1].z())};
-    const double p2[3] = {CGAL::to_double(p[2].x()), CGAL::to_double(p[2].y()), CGAL::to_double(p[2].z())};
-    for(int k = 0; k < 3; ++k) { a[k] = p1[k] - p0[k]; b[k] = p2[k] - p0[k]; c[k] = x[k] - p0[k]; }
+    const auto a = p[1] - p[0], b = p[2] - p[0], c = x - p[0];
     // solve c = u a + v b in the least-squares sense (x lies in the plane)
-    const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2], bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2],
-                 ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2], ca = c[0] * a[0] + c[1] * a[1] + c[2] * a[2],
-                 cb = c[0] * b[0] + c[1] * b[1] + c[2] * b[2];
+    const double aa = CGAL::to_double(a * a), bb = CGAL::to_double(b * b), ab = CGAL::to_double(a * b),
+                 ca = CGAL::to_double(c * a), cb = CGAL::to_double(c * b);
     const double det = aa * bb - ab * ab;
     const double u = (ca * bb - cb * ab) / det, v = (cb * aa - ca * ab) / det;
     return {{1 - u - v, u, v}};
