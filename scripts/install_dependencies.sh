@@ -3,7 +3,8 @@
 # Installs the Debian packages Geodesic_ridge needs, when run as root; otherwise
 # prints the one apt-get line to run. Exit status 0 iff everything is there.
 set -euo pipefail
-packages=(g++ make cmake libcgal-dev libboost-graph-dev libgmp-dev libmpfr-dev catch2 libeigen3-dev ccache)
+packages=(g++ make cmake libcgal-dev libboost-graph-dev libgmp-dev libmpfr-dev catch2 libeigen3-dev ccache
+          libpng-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
