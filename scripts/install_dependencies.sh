@@ -4,7 +4,7 @@
 # prints the one apt-get line to run. Exit status 0 iff everything is there.
 set -euo pipefail
 packages=(g++ make cmake libcgal-dev libboost-graph-dev libgmp-dev libmpfr-dev catch2 libeigen3-dev ccache
-          libpng-dev)
+          libboost-program-options-dev nlohmann-json3-dev libpng-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
