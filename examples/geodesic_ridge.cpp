@@ -24,6 +24,7 @@
 #include <Geodesic_ridge/refined_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/bounding_box.h>
@@ -56,6 +57,7 @@ typedef std::vector<std::vector<Geodesic_ridge::Ridge_point<Point_3> > > Ridge_p
 typedef Mesh::Property_map<vertex_descriptor, double>       Distance_map;
 typedef nlohmann::ordered_json                              Json; // keys stay in the order written
 namespace po = boost::program_options;
+namespace PMP = CGAL::Polygon_mesh_processing;
 
 struct Usage_error : std::runtime_error
 {
@@ -296,33 +298,29 @@ Options parse(int argc, char** argv)
   return o;
 }
 
-// The point (x,y,z) of face f as barycentric coordinates (CGAL's order). The
-// point must lie on the face up to round-off; tiny negative weights are clamped.
+// The point q of face f as a Face_location (CGAL's order). A point farther than
+// 1e-7 of the face's size from the face is an error; round-off below that is
+// clamped, so that the coordinates are >= 0 and sum to 1.
 Location locate(const Mesh& m, face_descriptor f, const Point_3& q, const std::string& what = "source point")
 {
-  const auto h = m.halfedge(f);
-  const Point_3 a = m.point(m.source(h)), b = m.point(m.target(h)),
-                c = m.point(m.target(m.next(h)));
-  const K::Vector_3 n = CGAL::cross_product(b - a, c - a);
-  const double nn = n.squared_length();
-  const double wa = CGAL::cross_product(c - b, q - b) * n / nn;
-  const double wb = CGAL::cross_product(a - c, q - c) * n / nn;
-  const double wc = CGAL::cross_product(b - a, q - a) * n / nn;
-  const double off_plane = std::abs((q - a) * n) / std::sqrt(nn);
-  const double size = std::sqrt(std::max({(b - a).squared_length(), (c - a).squared_length(),
-                                          (c - b).squared_length()}));
+  Location loc = PMP::locate_in_face(q, f, m); // the coordinates of q's projection on the face's plane
+  const double off_plane = std::sqrt(CGAL::squared_distance(q, PMP::construct_point(loc, m)));
+  double size2 = 0;
+  for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m))
+    size2 = std::max(size2, CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
   const double eps = 1e-7;
-  if(wa < -eps || wb < -eps || wc < -eps || off_plane > eps * size)
+  std::array<double, 3>& w = loc.second;
+  if(w[0] < -eps || w[1] < -eps || w[2] < -eps || off_plane > eps * std::sqrt(size2))
   {
     std::ostringstream s;
     s.precision(17);
     s << what << " (" << q << ") is not on face " << std::size_t(f);
     throw Geodesic_ridge::Invalid_source_error(s.str());
   }
-  std::array<double, 3> w = {std::max(wa, 0.), std::max(wb, 0.), std::max(wc, 0.)};
+  for(double& x : w) x = std::max(x, 0.);
   const double sum = w[0] + w[1] + w[2];
   for(double& x : w) x /= sum;
-  return Location(f, w);
+  return loc;
 }
 
 // The reader adds each face (v0, v1, v2) of the file with CGAL::Euler::add_face,
@@ -659,12 +657,7 @@ void write_picture(const std::string& filename, const Mesh& mesh, const Ridge& r
   curves[1].polylines = reported;
   curves[1].width_pixels = 3;
   // the source: a small cross
-  const auto& loc = ridge.rough_cut_locus.source.location;
-  const auto h = mesh.halfedge(loc.first);
-  const Point_3 a = mesh.point(mesh.source(h)), b = mesh.point(mesh.target(h)), c = mesh.point(mesh.target(mesh.next(h)));
-  const Point_3 src(loc.second[0] * a.x() + loc.second[1] * b.x() + loc.second[2] * c.x(),
-                    loc.second[0] * a.y() + loc.second[1] * b.y() + loc.second[2] * c.y(),
-                    loc.second[0] * a.z() + loc.second[1] * b.z() + loc.second[2] * c.z());
+  const Point_3 src = PMP::construct_point(ridge.rough_cut_locus.source.location, mesh);
   const auto box = CGAL::bounding_box(mesh.points().begin(), mesh.points().end());
   const double arm = 0.015 * std::sqrt(CGAL::squared_distance(box.min(), box.max()));
   for(int k = 0; k < 3; ++k)
