@@ -261,8 +261,8 @@ void read_values(const po::variables_map& vm, Options& o)
                                                   "': this version has 'exact' and 'fmm'");
 }
 
-// The options, checked; the tolerance's range is the library's to check (it
-// does so before any work).
+// The options, checked. The tolerance's range is the library's to check: it
+// does so when the ridge is computed, before any work.
 Options parse(int argc, char** argv)
 {
   const po::options_description visible = describe();
