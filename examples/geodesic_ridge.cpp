@@ -13,6 +13,8 @@
 //
 // Exit status: 0 success, 1 bad input (mesh, source, parameter), 2 bad command
 // line, 3 internal error. Every error is one line on stderr.
+//
+// Besides the package it needs Boost.Program_options, nlohmann-json and libpng.
 #include <Geodesic_ridge/IO/png.h>
 #include <Geodesic_ridge/IO/polylines.h>
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
@@ -22,15 +24,19 @@
 #include <Geodesic_ridge/refined_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/bounding_box.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
+#include <CGAL/bounding_box.h>
 
+#include <boost/program_options.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -45,13 +51,20 @@ typedef K::Point_3                                          Point_3;
 typedef CGAL::Surface_mesh<Point_3>                         Mesh;
 typedef Mesh::Vertex_index                                  vertex_descriptor;
 typedef Mesh::Face_index                                    face_descriptor;
+typedef std::pair<face_descriptor, std::array<double, 3> >  Location;
+typedef Geodesic_ridge::Ridge_curve<Mesh, Point_3>          Ridge;
+typedef std::vector<std::vector<Geodesic_ridge::Ridge_point<Point_3> > > Ridge_polylines;
+typedef Mesh::Property_map<vertex_descriptor, double>       Distance_map;
+typedef nlohmann::ordered_json                              Json; // keys stay in the order written
+namespace po = boost::program_options;
+namespace PMP = CGAL::Polygon_mesh_processing;
 
 struct Usage_error : std::runtime_error
 {
   using std::runtime_error::runtime_error;
 };
 
-const char* usage_text =
+const char* synopsis =
     "usage: geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z)\n"
     "                      [--tolerance T] [--solver exact|fmm] [--ridge OUT.polylines.txt]\n"
     "                      [--ridge-locations OUT.txt] [--rough-cut OUT.polylines.txt]\n"
@@ -59,41 +72,7 @@ const char* usage_text =
     "                      [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]\n"
     "                      [--query IN.txt [--query-barycentric] --query-out OUT.txt]\n"
     "                      [--field linear|cone] [--stats OUT.json] [--png OUT.png]\n"
-    "  MESH              closed, connected, manifold triangle mesh (.off, .obj, .ply)\n"
-    "  --source-vertex V source at vertex V (0-based, file order)\n"
-    "  --source-point FACE X Y Z\n"
-    "                    source at the point (X,Y,Z) of face FACE (0-based, file order)\n"
-    "  --tolerance T     significance tolerance in [0, 0.5) (default 0.025)\n"
-    "  --solver NAME     geodesic solver on the extended surface: exact (CGAL\n"
-    "                    Surface_mesh_shortest_path, default) or fmm (fast marching,\n"
-    "                    first order; heat and dijkstra are not in this version)\n"
-    "  --ridge OUT       write the ridge curve as CGAL polylines (n x1 y1 z1 ... per line)\n"
-    "  --ridge-locations OUT\n"
-    "                    write every ridge point as 'FACE B0 B1 B2 ANGLE' (barycentric in the\n"
-    "                    file order of the face's vertices; ANGLE: degrees between the fronts)\n"
-    "  --refined OUT.ply the ridge-refined mesh: faces the ridge crosses split along it, a\n"
-    "                    'distance' per vertex, a 'source_face' per face (binary PLY;\n"
-    "                    --ply-ascii for ASCII)\n"
-    "  --isolines N OUT  N iso-lines equally spaced strictly between 0 and the largest\n"
-    "                    distance, as CGAL polylines, from the region-wise field\n"
-    "  --isoline-values a,b,c OUT\n"
-    "                    iso-lines at the given distances\n"
-    "  --isolines-from-vertices\n"
-    "                    iso-lines from linear interpolation of the vertex distances instead\n"
-    "  --query IN.txt    distance queries, one per line: 'FACE X Y Z' (a point of the face,\n"
-    "                    within 1e-7 of its size), or with --query-barycentric 'FACE B0 B1 B2'\n"
-    "                    (summing to 1 within 1e-9); '#' starts a comment\n"
-    "  --query-out OUT   the distances, one per line in the order of IN, 17 digits\n"
-    "  --field KIND      the field the queries evaluate: linear (default, the paper's\n"
-    "                    region-wise linear field) or cone (exact solver only: per face\n"
-    "                    copy, the exact solver's cones; --ridge, --ridge-locations and the\n"
-    "                    picture's ridge are where the cones meet; the refined mesh, the\n"
-    "                    iso-lines and the picture's colours stay linear)\n"
-    "  --rough-cut OUT   write the rough cut locus K (stage 1) as CGAL polylines\n"
-    "  --stats OUT.json  write counts, timings and parameters as JSON\n"
-    "  --png OUT.png     picture: the mesh from two opposite sides coloured by the distance\n"
-    "                    (viridis, dark bands at 20 levels), the ridge in red, the rough\n"
-    "                    cut locus in white, the source in green\n";
+    "  MESH: a closed, connected, manifold triangle mesh (.off, .obj, .ply)\n\n";
 
 std::size_t parse_index(const std::string& what, const std::string& s)
 {
@@ -116,26 +95,6 @@ double parse_number(const std::string& what, const std::string& s)
   return v;
 }
 
-struct Options
-{
-  std::string mesh;
-  std::optional<std::size_t> source_vertex;
-  std::optional<std::size_t> source_face;
-  std::string source_face_text;
-  std::array<std::string, 3> source_point_text;
-  double tolerance = Geodesic_ridge::default_tolerance;
-  std::string rough_cut, stats, ridge, png, ridge_locations, refined;
-  bool ply_ascii = false;
-  std::string solver = "exact";
-  std::string isolines;                   // output file
-  std::optional<std::size_t> isoline_count;
-  std::vector<double> isoline_values;
-  bool isolines_from_vertices = false;
-  std::string query, query_out;
-  bool query_barycentric = false;
-  Geodesic_ridge::Field field = Geodesic_ridge::Field::linear;
-};
-
 std::vector<double> parse_values(const std::string& s)
 {
   std::vector<double> values;
@@ -150,148 +109,219 @@ std::vector<double> parse_values(const std::string& s)
   return values;
 }
 
+struct Options
+{
+  bool help = false;
+  std::string mesh;
+  std::optional<std::size_t> source_vertex;
+  std::optional<std::size_t> source_face;
+  std::array<std::string, 3> source_point_text;
+  double tolerance = Geodesic_ridge::default_tolerance;
+  std::string rough_cut, stats, ridge, png, ridge_locations, refined;
+  bool ply_ascii = false;
+  std::string solver = "exact";
+  std::string isolines;                   // output file
+  std::optional<std::size_t> isoline_count;
+  std::vector<double> isoline_values;
+  bool isolines_from_vertices = false;
+  std::string query, query_out;
+  bool query_barycentric = false;
+  Geodesic_ridge::Field field = Geodesic_ridge::Field::linear;
+};
+
+// Boost's multitoken() takes any number of values; --source-point takes 4, the
+// iso-line options 2, so that the mesh may follow them.
+class Tokens : public po::typed_value<std::vector<std::string> >
+{
+public:
+  Tokens(unsigned n, const char* name) : po::typed_value<std::vector<std::string> >(nullptr), n_(n)
+  { value_name(name); }
+  unsigned min_tokens() const override { return n_; }
+  unsigned max_tokens() const override { return n_; }
+
+private:
+  unsigned n_;
+};
+
+// The options and their help. Values stay text here: parse() reads them with
+// messages that name the value.
+po::options_description describe()
+{
+  po::options_description d("options", 100, 50);
+  auto text = [](const char* name) { return po::value<std::string>()->value_name(name); };
+  d.add_options()
+    ("help,h", "print this help")
+    ("source-vertex", text("V"), "source at vertex V (0-based, file order)")
+    ("source-point", new Tokens(4, "FACE X Y Z"), "source at the point (X,Y,Z) of face FACE (0-based, file order)")
+    ("tolerance", text("T"), "significance tolerance in [0, 0.5) (default 0.025)")
+    ("solver", text("NAME"), "geodesic solver on the extended surface: exact (CGAL Surface_mesh_shortest_path, "
+                             "default) or fmm (fast marching, first order; heat and dijkstra are not in this version)")
+    ("ridge", text("OUT"), "write the ridge curve as CGAL polylines (n x1 y1 z1 ... per line)")
+    ("ridge-locations", text("OUT"), "write every ridge point as 'FACE B0 B1 B2 ANGLE' (barycentric in the file "
+                                     "order of the face's vertices; ANGLE: degrees between the fronts)")
+    ("refined", text("OUT.ply"), "the ridge-refined mesh: faces the ridge crosses split along it, a 'distance' per "
+                                 "vertex, a 'source_face' per face (binary PLY; --ply-ascii for ASCII)")
+    ("ply-ascii", po::bool_switch(), "write the refined mesh as ASCII PLY")
+    ("isolines", new Tokens(2, "N OUT"), "N iso-lines equally spaced strictly between 0 and the largest distance, "
+                                         "as CGAL polylines, from the region-wise field")
+    ("isoline-values", new Tokens(2, "a,b,c OUT"), "iso-lines at the given distances")
+    ("isolines-from-vertices", po::bool_switch(),
+     "iso-lines from linear interpolation of the vertex distances instead")
+    ("query", text("IN.txt"), "distance queries, one per line: 'FACE X Y Z' (a point of the face, within 1e-7 of "
+                              "its size), or with --query-barycentric 'FACE B0 B1 B2' (summing to 1 within 1e-9); "
+                              "'#' starts a comment")
+    ("query-barycentric", po::bool_switch(), "the queries are barycentric coordinates")
+    ("query-out", text("OUT"), "the distances, one per line in the order of IN, 17 digits")
+    ("field", text("KIND"), "the field the queries evaluate: linear (default, the paper's region-wise linear "
+                            "field) or cone (exact solver only: per face copy, the exact solver's cones; --ridge, "
+                            "--ridge-locations and the picture's ridge are where the cones meet; the refined mesh, "
+                            "the iso-lines and the picture's colours stay linear)")
+    ("rough-cut", text("OUT"), "write the rough cut locus K (stage 1) as CGAL polylines")
+    ("stats", text("OUT.json"), "write counts, timings and parameters as JSON")
+    ("png", text("OUT.png"), "picture: the mesh from two opposite sides coloured by the distance (viridis, dark "
+                             "bands at 20 levels), the ridge in red, the rough cut locus in white, the source in "
+                             "green");
+  return d;
+}
+
+// Boost's errors, said as this program always said them.
+po::variables_map read_command_line(int argc, char** argv, const po::options_description& visible)
+{
+  po::options_description all;
+  all.add(visible).add_options()("mesh", po::value<std::vector<std::string> >());
+  po::positional_options_description positional;
+  positional.add("mesh", -1);
+  po::variables_map vm;
+  try
+  {
+    // no guessing: --tol is not --tolerance
+    const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
+    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).style(style).run(), vm);
+  }
+  catch(const po::unknown_option& e)
+  {
+    throw Usage_error("unknown option '" + e.get_option_name() + "'");
+  }
+  catch(const po::invalid_command_line_syntax& e)
+  {
+    if(e.kind() != po::invalid_command_line_syntax::missing_parameter) throw Usage_error(e.what());
+    const auto* d = visible.find_nothrow(e.get_option_name().substr(2), false);
+    throw Usage_error("option " + e.get_option_name() + " needs " +
+                      (d && d->semantic()->max_tokens() > 1 ? d->semantic()->name() : "a value"));
+  }
+  catch(const po::multiple_occurrences& e)
+  {
+    if(e.get_option_name() == "--source-vertex") throw Usage_error("give one source only");
+    throw Usage_error("option " + e.get_option_name() + " is given more than once");
+  }
+  catch(const po::error& e)
+  {
+    throw Usage_error(e.what());
+  }
+  return vm;
+}
+
+std::string text(const po::variables_map& vm, const char* name)
+{
+  return vm.count(name) ? vm[name].as<std::string>() : std::string();
+}
+
+std::vector<std::string> tokens(const po::variables_map& vm, const char* name)
+{
+  return vm.count(name) ? vm[name].as<std::vector<std::string> >() : std::vector<std::string>();
+}
+
+// The options whose values are numbers or names, read with messages that name them.
+void read_values(const po::variables_map& vm, Options& o)
+{
+  const auto point = tokens(vm, "source-point");
+  if((vm.count("source-vertex") && !point.empty()) || point.size() > 4) throw Usage_error("give one source only");
+  if(vm.count("source-vertex")) o.source_vertex = parse_index("source vertex", text(vm, "source-vertex"));
+  if(!point.empty())
+  {
+    o.source_face = parse_index("source face", point[0]);
+    std::copy(point.begin() + 1, point.end(), o.source_point_text.begin());
+  }
+  const auto isolines = tokens(vm, "isolines"), values = tokens(vm, "isoline-values");
+  if(isolines.size() + values.size() > 2) throw Usage_error("give --isolines or --isoline-values once");
+  if(!isolines.empty())
+  {
+    o.isoline_count = parse_index("iso-line count", isolines[0]);
+    if(*o.isoline_count == 0) throw Geodesic_ridge::Invalid_parameter_error("iso-line count must be positive");
+    o.isolines = isolines[1];
+  }
+  if(!values.empty()) { o.isoline_values = parse_values(values[0]); o.isolines = values[1]; }
+  const std::string field = vm.count("field") ? text(vm, "field") : "linear";
+  if(field != "linear" && field != "cone")
+    throw Geodesic_ridge::Invalid_parameter_error("unknown field '" + field + "': linear or cone");
+  o.field = field == "cone" ? Geodesic_ridge::Field::cone : Geodesic_ridge::Field::linear;
+  if(vm.count("solver")) o.solver = text(vm, "solver");
+  if(o.solver != "exact" && o.solver != "fmm")
+    throw Geodesic_ridge::Invalid_parameter_error("unknown solver '" + o.solver +
+                                                  "': this version has 'exact' and 'fmm'");
+}
+
+// The options, checked. The tolerance's range is the library's to check: it
+// does so when the ridge is computed, before any work.
 Options parse(int argc, char** argv)
 {
+  const po::options_description visible = describe();
+  const po::variables_map vm = read_command_line(argc, argv, visible);
   Options o;
-  std::vector<std::string> args(argv + 1, argv + argc);
-  auto value = [&](std::size_t& i, const std::string& opt) -> const std::string& {
-    if(i + 1 >= args.size()) throw Usage_error("option " + opt + " needs a value");
-    return args[++i];
-  };
-  bool have_tolerance = false;
-  std::string tolerance_text;
-  for(std::size_t i = 0; i < args.size(); ++i)
+  if(vm.count("help"))
   {
-    const std::string& a = args[i];
-    if(a == "--help" || a == "-h") { std::cout << usage_text; std::exit(0); }
-    else if(a == "--source-vertex")
-    {
-      if(o.source_vertex || o.source_face) throw Usage_error("give one source only");
-      o.source_vertex = parse_index("source vertex", value(i, a));
-    }
-    else if(a == "--source-point")
-    {
-      if(o.source_vertex || o.source_face) throw Usage_error("give one source only");
-      if(i + 4 >= args.size()) throw Usage_error("option --source-point needs FACE X Y Z");
-      o.source_face = parse_index("source face", args[++i]);
-      for(int k = 0; k < 3; ++k) o.source_point_text[k] = args[++i];
-    }
-    else if(a == "--tolerance") { tolerance_text = value(i, a); have_tolerance = true; }
-    else if(a == "--rough-cut") o.rough_cut = value(i, a);
-    else if(a == "--ridge") o.ridge = value(i, a);
-    else if(a == "--ridge-locations") o.ridge_locations = value(i, a);
-    else if(a == "--refined") o.refined = value(i, a);
-    else if(a == "--ply-ascii") o.ply_ascii = true;
-    else if(a == "--isolines" || a == "--isoline-values")
-    {
-      if(!o.isolines.empty()) throw Usage_error("give --isolines or --isoline-values once");
-      if(i + 2 >= args.size()) throw Usage_error("option " + a + " needs a value and an output file");
-      const std::string& v = args[++i];
-      if(a == "--isolines")
-      {
-        o.isoline_count = parse_index("iso-line count", v);
-        if(*o.isoline_count == 0) throw Geodesic_ridge::Invalid_parameter_error("iso-line count must be positive");
-      }
-      else o.isoline_values = parse_values(v);
-      o.isolines = args[++i];
-    }
-    else if(a == "--isolines-from-vertices") o.isolines_from_vertices = true;
-    else if(a == "--query") o.query = value(i, a);
-    else if(a == "--query-out") o.query_out = value(i, a);
-    else if(a == "--query-barycentric") o.query_barycentric = true;
-    else if(a == "--field")
-    {
-      const std::string& kind = value(i, a);
-      if(kind == "linear") o.field = Geodesic_ridge::Field::linear;
-      else if(kind == "cone") o.field = Geodesic_ridge::Field::cone;
-      else throw Geodesic_ridge::Invalid_parameter_error("unknown field '" + kind + "': linear or cone");
-    }
-    else if(a == "--png") o.png = value(i, a);
-    else if(a == "--solver")
-    {
-      o.solver = value(i, a);
-      if(o.solver != "exact" && o.solver != "fmm")
-        throw Geodesic_ridge::Invalid_parameter_error("unknown solver '" + o.solver +
-                                                      "': this version has 'exact' and 'fmm'");
-    }
-    else if(a == "--stats") o.stats = value(i, a);
-    else if(a.size() > 1 && a[0] == '-')
-      throw Usage_error("unknown option '" + a + "'");
-    else if(o.mesh.empty()) o.mesh = a;
-    else throw Usage_error("unexpected argument '" + a + "' (the mesh is '" + o.mesh + "')");
+    std::cout << synopsis << visible;
+    o.help = true;
+    return o;
   }
-  if(o.mesh.empty()) throw Usage_error("missing the MESH argument");
+  read_values(vm, o);
+  const auto mesh = tokens(vm, "mesh");
+  if(mesh.empty()) throw Usage_error("missing the MESH argument");
+  if(mesh.size() > 1) throw Usage_error("unexpected argument '" + mesh[1] + "' (the mesh is '" + mesh[0] + "')");
+  o.mesh = mesh[0];
+  o.rough_cut = text(vm, "rough-cut"), o.stats = text(vm, "stats"), o.ridge = text(vm, "ridge");
+  o.png = text(vm, "png"), o.ridge_locations = text(vm, "ridge-locations"), o.refined = text(vm, "refined");
+  o.query = text(vm, "query"), o.query_out = text(vm, "query-out");
+  o.ply_ascii = vm["ply-ascii"].as<bool>();
+  o.isolines_from_vertices = vm["isolines-from-vertices"].as<bool>();
+  o.query_barycentric = vm["query-barycentric"].as<bool>();
   if(!o.source_vertex && !o.source_face)
     throw Usage_error("missing the source: --source-vertex V or --source-point FACE X Y Z");
   if(o.query.empty() != o.query_out.empty()) throw Usage_error("--query and --query-out go together");
   if(o.query_barycentric && o.query.empty()) throw Usage_error("--query-barycentric needs --query");
-  if(o.isolines_from_vertices && o.isolines.empty()) throw Usage_error("--isolines-from-vertices needs --isolines or --isoline-values");
+  if(o.isolines_from_vertices && o.isolines.empty())
+    throw Usage_error("--isolines-from-vertices needs --isolines or --isoline-values");
   if(o.ply_ascii && o.refined.empty()) throw Usage_error("--ply-ascii needs --refined");
   if(o.field == Geodesic_ridge::Field::cone && o.solver != "exact")
     throw Geodesic_ridge::Invalid_parameter_error("the cone field needs the exact solver");
-  if(have_tolerance) o.tolerance = parse_number("tolerance", tolerance_text);
-  // a bad tolerance is reported before the mesh is read
-  Geodesic_ridge::internal::get_tolerance(Geodesic_ridge::parameters::tolerance(o.tolerance));
+  if(vm.count("tolerance")) o.tolerance = parse_number("tolerance", text(vm, "tolerance"));
   return o;
 }
 
-// The point (x,y,z) of face f as barycentric coordinates (CGAL's order). The
-// point must lie on the face up to round-off; tiny negative weights are clamped.
-std::array<double, 3> locate_in_face(const Mesh& m, face_descriptor f, const Point_3& q,
-                                     const std::string& what = "source point")
+// The point q of face f as a Face_location (CGAL's order). A point farther than
+// 1e-7 of the face's size from the face is an error; round-off below that is
+// clamped, so that the coordinates are >= 0 and sum to 1.
+Location locate(const Mesh& m, face_descriptor f, const Point_3& q, const std::string& what = "source point")
 {
-  const auto h = m.halfedge(f);
-  const Point_3 a = m.point(m.source(h)), b = m.point(m.target(h)),
-                c = m.point(m.target(m.next(h)));
-  const K::Vector_3 n = CGAL::cross_product(b - a, c - a);
-  const double nn = n.squared_length();
-  const double wa = CGAL::cross_product(c - b, q - b) * n / nn;
-  const double wb = CGAL::cross_product(a - c, q - c) * n / nn;
-  const double wc = CGAL::cross_product(b - a, q - a) * n / nn;
-  const double off_plane = std::abs((q - a) * n) / std::sqrt(nn);
-  const double size = std::sqrt(std::max({(b - a).squared_length(), (c - a).squared_length(),
-                                          (c - b).squared_length()}));
+  Location loc = PMP::locate_in_face(q, f, m); // the coordinates of q's projection on the face's plane
+  const double off_plane = std::sqrt(CGAL::squared_distance(q, PMP::construct_point(loc, m)));
+  double size2 = 0;
+  for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m))
+    size2 = std::max(size2, CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
   const double eps = 1e-7;
-  if(wa < -eps || wb < -eps || wc < -eps || off_plane > eps * size)
+  std::array<double, 3>& w = loc.second;
+  if(w[0] < -eps || w[1] < -eps || w[2] < -eps || off_plane > eps * std::sqrt(size2))
   {
     std::ostringstream s;
     s.precision(17);
     s << what << " (" << q << ") is not on face " << std::size_t(f);
     throw Geodesic_ridge::Invalid_source_error(s.str());
   }
-  std::array<double, 3> w = {std::max(wa, 0.), std::max(wb, 0.), std::max(wc, 0.)};
+  for(double& x : w) x = std::max(x, 0.);
   const double sum = w[0] + w[1] + w[2];
   for(double& x : w) x /= sum;
-  return w;
+  return loc;
 }
-
-std::string json_number(double x)
-{
-  if(!std::isfinite(x)) return "null";
-  // the shortest decimal that reads back as the same double
-  for(int digits = 6; digits <= 17; ++digits)
-  {
-    std::ostringstream s;
-    s.precision(digits);
-    s << x;
-    if(std::strtod(s.str().c_str(), nullptr) == x || digits == 17) return s.str();
-  }
-  return "null";
-}
-
-std::string json_string(const std::string& x)
-{
-  std::string out = "\"";
-  for(char c : x)
-  {
-    if(c == '"' || c == '\\') { out += '\\'; out += c; }
-    else if(static_cast<unsigned char>(c) < 0x20) { char buf[8]; std::snprintf(buf, sizeof buf, "\\u%04x", c); out += buf; }
-    else out += c;
-  }
-  return out + "\"";
-}
-
-typedef Geodesic_ridge::Ridge_curve<Mesh, Point_3> Ridge;
 
 // The reader adds each face (v0, v1, v2) of the file with CGAL::Euler::add_face,
 // whose halfedge(f) runs from v2 to v0: a Face_location's corners are (v2, v0,
@@ -299,18 +329,36 @@ typedef Geodesic_ridge::Ridge_curve<Mesh, Point_3> Ridge;
 std::array<double, 3> file_order_to_location(const std::array<double, 3>& b) { return {{b[2], b[0], b[1]}}; }
 std::array<double, 3> location_to_file_order(const std::array<double, 3>& l) { return {{l[1], l[2], l[0]}}; }
 
-// One query per line of `filename`: "FACE X Y Z" or, barycentric, "FACE B0 B1
-// B2"; '#' starts a comment. Errors name the line.
-std::vector<std::pair<face_descriptor, std::array<double, 3> > > read_queries(const std::string& filename,
-                                                                             const Mesh& mesh, bool barycentric)
+// One query of a query file: "FACE X Y Z" or, barycentric, "FACE B0 B1 B2".
+Location read_query(const std::vector<std::string>& t, const Mesh& mesh, bool barycentric)
+{
+  if(t.size() != 4)
+    throw Geodesic_ridge::Invalid_parameter_error(std::string("expected 'FACE ") + (barycentric ? "B0 B1 B2'" : "X Y Z'") +
+                                                  ", got " + std::to_string(t.size()) + " fields");
+  const std::size_t face = parse_index("face", t[0]);
+  if(face >= mesh.number_of_faces())
+    throw Geodesic_ridge::Invalid_parameter_error("face " + t[0] + " is out of range: the mesh has " +
+                                                  std::to_string(mesh.number_of_faces()) + " faces");
+  const face_descriptor f{static_cast<Mesh::size_type>(face)};
+  std::array<double, 3> v;
+  for(int k = 0; k < 3; ++k) v[k] = parse_number("coordinate", t[k + 1]);
+  if(!barycentric) return locate(mesh, f, Point_3(v[0], v[1], v[2]), "point");
+  const double sum = v[0] + v[1] + v[2];
+  if(std::abs(sum - 1) > 1e-9 || v[0] < -1e-9 || v[1] < -1e-9 || v[2] < -1e-9)
+    throw Geodesic_ridge::Invalid_parameter_error("barycentric coordinates must be >= 0 and sum to 1 within 1e-9");
+  for(double& x : v) x = std::max(x, 0.);
+  return Location(f, file_order_to_location(v));
+}
+
+// One query per line of `filename`; '#' starts a comment. Errors name the line.
+std::vector<Location> read_queries(const std::string& filename, const Mesh& mesh, bool barycentric)
 {
   std::ifstream is(filename);
   if(!is) throw Geodesic_ridge::Invalid_parameter_error("cannot open query file '" + filename + "'");
-  std::vector<std::pair<face_descriptor, std::array<double, 3> > > queries;
+  std::vector<Location> queries;
   std::string line;
   for(std::size_t number = 1; std::getline(is, line); ++number)
   {
-    const std::string where = "query file '" + filename + "' line " + std::to_string(number) + ": ";
     const std::size_t hash = line.find('#');
     if(hash != std::string::npos) line.erase(hash);
     std::istringstream tokens(line);
@@ -319,32 +367,12 @@ std::vector<std::pair<face_descriptor, std::array<double, 3> > > read_queries(co
     if(t.empty()) continue;
     try
     {
-      if(t.size() != 4)
-        throw Geodesic_ridge::Invalid_parameter_error(std::string("expected 'FACE ") +
-                                                      (barycentric ? "B0 B1 B2'" : "X Y Z'") + ", got " +
-                                                      std::to_string(t.size()) + " fields");
-      const std::size_t face = parse_index("face", t[0]);
-      if(face >= mesh.number_of_faces())
-        throw Geodesic_ridge::Invalid_parameter_error("face " + t[0] + " is out of range: the mesh has " +
-                                                      std::to_string(mesh.number_of_faces()) + " faces");
-      const face_descriptor f{static_cast<Mesh::size_type>(face)};
-      std::array<double, 3> v;
-      for(int k = 0; k < 3; ++k) v[k] = parse_number("coordinate", t[k + 1]);
-      if(barycentric)
-      {
-        const double sum = v[0] + v[1] + v[2];
-        if(std::abs(sum - 1) > 1e-9 || v[0] < -1e-9 || v[1] < -1e-9 || v[2] < -1e-9)
-          throw Geodesic_ridge::Invalid_parameter_error(
-              "barycentric coordinates must be >= 0 and sum to 1 within 1e-9");
-        for(double& x : v) x = std::max(x, 0.);
-        queries.emplace_back(f, file_order_to_location(v));
-      }
-      else
-        queries.emplace_back(f, locate_in_face(mesh, f, Point_3(v[0], v[1], v[2]), "point"));
+      queries.push_back(read_query(t, mesh, barycentric));
     }
     catch(const Geodesic_ridge::Error& e)
     {
-      throw Geodesic_ridge::Invalid_parameter_error(where + e.what());
+      throw Geodesic_ridge::Invalid_parameter_error("query file '" + filename + "' line " + std::to_string(number) +
+                                                    ": " + e.what());
     }
   }
   if(is.bad()) throw Geodesic_ridge::Invalid_parameter_error("cannot read query file '" + filename + "'");
@@ -359,163 +387,141 @@ void write_isolines(const std::string& filename, const Lines& lines)
   Geodesic_ridge::IO::write_polylines(filename, polylines);
 }
 
+Json rough_cut_json(const Geodesic_ridge::Rough_cut_locus_statistics& s)
+{
+  return {{"dual_edges", s.number_of_dual_edges},
+          {"core_dual_edges", s.number_of_core_dual_edges},
+          {"kept_dual_edges", s.number_of_kept_dual_edges},
+          {"false_branch_dual_edges", s.number_of_curvature_pruned_dual_edges},
+          {"kept_dual_leaves", s.number_of_kept_dual_leaves},
+          {"leaf_extension_dual_edges", s.number_of_leaf_extension_edges},
+          {"extended_dual_leaves", s.number_of_extended_dual_leaves},
+          {"cut_edges", s.number_of_cut_edges},
+          {"cut_vertices", s.number_of_cut_vertices},
+          {"cut_leaves", s.number_of_cut_leaves},
+          {"cut_cycle_rank", s.cut_cycle_rank},
+          {"closing_rungs", s.number_of_closing_rungs},
+          {"teeth_pruned", s.number_of_teeth_pruned},
+          {"corner_moves", s.number_of_corner_moves},
+          {"fallback_single_rung", s.fallback_single_rung}};
+}
+
+Json extended_surface_json(const Geodesic_ridge::Geodesic_ridge_statistics& g, std::size_t mesh_faces)
+{
+  const auto& x = g.extended_surface;
+  return {{"faces", x.number_of_faces},
+          {"vertices", x.number_of_vertices},
+          {"faces_over_mesh_faces", double(x.number_of_faces) / mesh_faces},
+          {"rings", x.rings},
+          {"solves", g.solves},
+          {"predicted_passes", g.predicted_passes},
+          {"outer_copies_still_winning", g.outer_copies_winning},
+          {"ring_cap_hit", g.ring_cap_hit},
+          {"closures", x.number_of_closures},
+          {"leaf_vertices", x.number_of_leaf_vertices},
+          {"winding_bound_hits", x.winding_bound_hits},
+          {"refused_faces", x.refused_faces},
+          {"refused_gluings", x.refused_gluings},
+          {"open_fans", x.open_fans}};
+}
+
+Json ridge_json(const Ridge& rc)
+{
+  const auto& q = rc.statistics.ridge;
+  return {{"polylines", rc.polylines.size()},
+          {"segments", q.ridge_segments},
+          {"junctions", q.junctions},
+          {"free_ends", q.free_ends},
+          {"components", q.components},
+          {"cycles", q.cycles},
+          {"total_length", q.total_length},
+          {"faces_with_several_copies", q.faces_with_several_copies},
+          {"surviving_copies", q.surviving_copies},
+          {"split_copies", q.split_copies},
+          {"envelope_segments", q.envelope_segments},
+          {"edge_segments", q.edge_segments},
+          {"regions_before_merge", q.regions_before_merge},
+          {"merged_segments", q.merged_segments},
+          {"pruned_spur_segments", q.pruned_spur_segments},
+          {"pruned_flat_end_segments", q.pruned_flat_end_segments},
+          {"dropped_components", q.dropped_components}};
+}
+
 void write_stats(const std::string& filename, const Options& o, const Ridge& rc, double read_seconds,
                  const Geodesic_ridge::Refined_mesh_statistics* refined)
 {
   const auto& r = rc.rough_cut_locus;
   const auto& s = r.statistics;
   const auto& g = rc.statistics;
-  const auto& x = g.extended_surface;
-  const auto& q = g.ridge;
+  const Json source = o.source_vertex ? Json{{"vertex", *o.source_vertex}}
+                                      : Json{{"face", *o.source_face}, {"barycentric", r.source.location.second}};
+  Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source}, {"tolerance", o.tolerance}, {"solver", g.solver},
+                            {"leaf_curvature_degrees", Geodesic_ridge::default_leaf_curvature},
+                            {"branch_curvature_degrees", Geodesic_ridge::default_branch_curvature},
+                            {"tree_from_solver", g.tree_from_solver}}},
+            {"mesh", {{"vertices", s.number_of_vertices}, {"edges", s.number_of_edges},
+                      {"faces", s.number_of_faces}, {"genus", s.genus}, {"total_area", r.total_area}}},
+            {"rough_cut_locus", rough_cut_json(s)},
+            {"extended_surface", extended_surface_json(g, s.number_of_faces)},
+            {"ridge", ridge_json(rc)}};
+  const auto& c = g.cone_ridge;
+  if(!rc.cone_polylines.empty())
+    j["cone_ridge"] = {{"tolerance", c.tolerance}, {"points_moved", c.points_moved},
+                       {"junctions_moved", c.junctions_moved}, {"points_kept", c.points_kept},
+                       {"points_added", c.points_added}, {"largest_move_mean_edges", c.largest_move},
+                       {"time", c.time}};
+  if(refined)
+    j["refined_mesh"] = {{"vertices", refined->vertices}, {"faces", refined->faces},
+                         {"split_faces", refined->split_faces}, {"centre_vertices", refined->centre_vertices},
+                         {"ridge_edges", refined->ridge_edges},
+                         {"unmatched_ridge_segments", refined->unmatched_ridge_segments},
+                         {"largest_disagreement", refined->largest_disagreement}};
+  j["timings_seconds"] = {{"read_and_validate", read_seconds}, {"tree_distances", g.time_solve_on_mesh},
+                          {"shortest_path_tree", s.time_shortest_path_tree}, {"significance", s.time_significance},
+                          {"cut_graph", s.time_cut_graph}, {"disk_check", s.time_disk_check},
+                          {"rough_cut_locus_total", s.time_total}, {"extended_surface", g.time_extension},
+                          {"solve", g.time_solve}, {"envelope_and_dominance", g.time_envelope},
+                          {"ridge_assembly", g.time_assembly}, {"total", g.time_total}};
   std::ofstream os(filename);
   if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
-  os << "{\n"
-     << "  \"parameters\": {\n"
-     << "    \"mesh\": " << json_string(o.mesh) << ",\n"
-     << "    \"source\": " << (o.source_vertex
-                                ? "{\"vertex\": " + std::to_string(*o.source_vertex) + "}"
-                                : "{\"face\": " + std::to_string(*o.source_face) + ", \"barycentric\": [" +
-                                      json_number(r.source.location.second[0]) + ", " +
-                                      json_number(r.source.location.second[1]) + ", " +
-                                      json_number(r.source.location.second[2]) + "]}") << ",\n"
-     << "    \"tolerance\": " << json_number(o.tolerance) << ",\n"
-     << "    \"solver\": " << json_string(g.solver) << ",\n"
-     << "    \"leaf_curvature_degrees\": " << json_number(Geodesic_ridge::default_leaf_curvature) << ",\n"
-     << "    \"branch_curvature_degrees\": " << json_number(Geodesic_ridge::default_branch_curvature) << ",\n"
-     << "    \"tree_from_solver\": " << (g.tree_from_solver ? "true" : "false") << "\n"
-     << "  },\n"
-     << "  \"mesh\": {\"vertices\": " << s.number_of_vertices << ", \"edges\": " << s.number_of_edges
-     << ", \"faces\": " << s.number_of_faces << ", \"genus\": " << s.genus
-     << ", \"total_area\": " << json_number(r.total_area) << "},\n"
-     << "  \"rough_cut_locus\": {\n"
-     << "    \"dual_edges\": " << s.number_of_dual_edges << ",\n"
-     << "    \"core_dual_edges\": " << s.number_of_core_dual_edges << ",\n"
-     << "    \"kept_dual_edges\": " << s.number_of_kept_dual_edges << ",\n"
-     << "    \"false_branch_dual_edges\": " << s.number_of_curvature_pruned_dual_edges << ",\n"
-     << "    \"kept_dual_leaves\": " << s.number_of_kept_dual_leaves << ",\n"
-     << "    \"leaf_extension_dual_edges\": " << s.number_of_leaf_extension_edges << ",\n"
-     << "    \"extended_dual_leaves\": " << s.number_of_extended_dual_leaves << ",\n"
-     << "    \"cut_edges\": " << s.number_of_cut_edges << ",\n"
-     << "    \"cut_vertices\": " << s.number_of_cut_vertices << ",\n"
-     << "    \"cut_leaves\": " << s.number_of_cut_leaves << ",\n"
-     << "    \"cut_cycle_rank\": " << s.cut_cycle_rank << ",\n"
-     << "    \"closing_rungs\": " << s.number_of_closing_rungs << ",\n"
-     << "    \"teeth_pruned\": " << s.number_of_teeth_pruned << ",\n"
-     << "    \"corner_moves\": " << s.number_of_corner_moves << ",\n"
-     << "    \"fallback_single_rung\": " << (s.fallback_single_rung ? "true" : "false") << "\n"
-     << "  },\n"
-     << "  \"extended_surface\": {\n"
-     << "    \"faces\": " << x.number_of_faces << ",\n"
-     << "    \"vertices\": " << x.number_of_vertices << ",\n"
-     << "    \"faces_over_mesh_faces\": " << json_number(double(x.number_of_faces) / s.number_of_faces) << ",\n"
-     << "    \"rings\": " << x.rings << ",\n"
-     << "    \"solves\": " << g.solves << ",\n"
-     << "    \"predicted_passes\": " << g.predicted_passes << ",\n"
-     << "    \"outer_copies_still_winning\": " << g.outer_copies_winning << ",\n"
-     << "    \"ring_cap_hit\": " << (g.ring_cap_hit ? "true" : "false") << ",\n"
-     << "    \"closures\": " << x.number_of_closures << ",\n"
-     << "    \"leaf_vertices\": " << x.number_of_leaf_vertices << ",\n"
-     << "    \"winding_bound_hits\": " << x.winding_bound_hits << ",\n"
-     << "    \"refused_faces\": " << x.refused_faces << ",\n"
-     << "    \"refused_gluings\": " << x.refused_gluings << ",\n"
-     << "    \"open_fans\": " << x.open_fans << "\n"
-     << "  },\n"
-     << "  \"ridge\": {\n"
-     << "    \"polylines\": " << rc.polylines.size() << ",\n"
-     << "    \"segments\": " << q.ridge_segments << ",\n"
-     << "    \"junctions\": " << q.junctions << ",\n"
-     << "    \"free_ends\": " << q.free_ends << ",\n"
-     << "    \"components\": " << q.components << ",\n"
-     << "    \"cycles\": " << q.cycles << ",\n"
-     << "    \"total_length\": " << json_number(q.total_length) << ",\n"
-     << "    \"faces_with_several_copies\": " << q.faces_with_several_copies << ",\n"
-     << "    \"surviving_copies\": " << q.surviving_copies << ",\n"
-     << "    \"split_copies\": " << q.split_copies << ",\n"
-     << "    \"envelope_segments\": " << q.envelope_segments << ",\n"
-     << "    \"edge_segments\": " << q.edge_segments << ",\n"
-     << "    \"regions_before_merge\": " << q.regions_before_merge << ",\n"
-     << "    \"merged_segments\": " << q.merged_segments << ",\n"
-     << "    \"pruned_spur_segments\": " << q.pruned_spur_segments << ",\n"
-     << "    \"pruned_flat_end_segments\": " << q.pruned_flat_end_segments << ",\n"
-     << "    \"dropped_components\": " << q.dropped_components << "\n"
-     << "  },\n";
-  if(!rc.cone_polylines.empty())
-  {
-    const auto& c = g.cone_ridge;
-    os << "  \"cone_ridge\": {\"tolerance\": " << json_number(c.tolerance) << ", \"points_moved\": " << c.points_moved
-       << ", \"junctions_moved\": " << c.junctions_moved << ", \"points_kept\": " << c.points_kept
-       << ", \"points_added\": " << c.points_added << ", \"largest_move_mean_edges\": " << json_number(c.largest_move)
-       << ", \"time\": " << json_number(c.time) << "},\n";
-  }
-  if(refined)
-    os << "  \"refined_mesh\": {\"vertices\": " << refined->vertices << ", \"faces\": " << refined->faces
-       << ", \"split_faces\": " << refined->split_faces << ", \"centre_vertices\": " << refined->centre_vertices
-       << ", \"ridge_edges\": " << refined->ridge_edges
-       << ", \"unmatched_ridge_segments\": " << refined->unmatched_ridge_segments
-       << ", \"largest_disagreement\": " << json_number(refined->largest_disagreement) << "},\n";
-  os
-     << "  \"timings_seconds\": {\n"
-     << "    \"read_and_validate\": " << json_number(read_seconds) << ",\n"
-     << "    \"tree_distances\": " << json_number(g.time_solve_on_mesh) << ",\n"
-     << "    \"shortest_path_tree\": " << json_number(s.time_shortest_path_tree) << ",\n"
-     << "    \"significance\": " << json_number(s.time_significance) << ",\n"
-     << "    \"cut_graph\": " << json_number(s.time_cut_graph) << ",\n"
-     << "    \"disk_check\": " << json_number(s.time_disk_check) << ",\n"
-     << "    \"rough_cut_locus_total\": " << json_number(s.time_total) << ",\n"
-     << "    \"extended_surface\": " << json_number(g.time_extension) << ",\n"
-     << "    \"solve\": " << json_number(g.time_solve) << ",\n"
-     << "    \"envelope_and_dominance\": " << json_number(g.time_envelope) << ",\n"
-     << "    \"ridge_assembly\": " << json_number(g.time_assembly) << ",\n"
-     << "    \"total\": " << json_number(g.time_total) << "\n"
-     << "  }\n"
-     << "}\n";
+  // a file name that is not UTF-8 gets U+FFFD rather than an exception
+  os << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
   os.flush();
   if(!os) throw Geodesic_ridge::Error("cannot write '" + filename + "'");
 }
 
-int run(const Options& o)
+// The ridge of the source the options name; the solver is a type: one call per model.
+Ridge compute(const Mesh& mesh, const Options& o)
 {
-  const auto t0 = std::chrono::steady_clock::now();
-  Mesh mesh;
-  Geodesic_ridge::IO::read_triangle_mesh(o.mesh, mesh);
-  const double read_seconds = Geodesic_ridge::internal::seconds_since(t0);
-  // bad queries are reported before the ridge is computed
-  const auto queries = o.query.empty() ? std::vector<std::pair<face_descriptor, std::array<double, 3> > >()
-                                       : read_queries(o.query, mesh, o.query_barycentric);
-
   namespace p = Geodesic_ridge::parameters;
-  // the solver is a type: one call per model
   auto compute = [&](const auto& source) {
     if(o.solver == "fmm")
       return Geodesic_ridge::compute_ridge_curve(
           mesh, source, p::tolerance(o.tolerance, p::solver(Geodesic_ridge::Fast_marching_solver())));
     return Geodesic_ridge::compute_ridge_curve(mesh, source, p::tolerance(o.tolerance, p::field(o.field)));
   };
-  std::optional<Ridge> ridge;
   if(o.source_vertex)
   {
     if(*o.source_vertex >= mesh.number_of_vertices())
       throw Geodesic_ridge::Invalid_source_error(
           "source vertex " + std::to_string(*o.source_vertex) + " is out of range: the mesh has " +
           std::to_string(mesh.number_of_vertices()) + " vertices");
-    ridge = compute(vertex_descriptor(Mesh::size_type(*o.source_vertex)));
+    return compute(vertex_descriptor(Mesh::size_type(*o.source_vertex)));
   }
-  else
-  {
-    if(*o.source_face >= mesh.number_of_faces())
-      throw Geodesic_ridge::Invalid_source_error(
-          "source face " + std::to_string(*o.source_face) + " is out of range: the mesh has " +
-          std::to_string(mesh.number_of_faces()) + " faces");
-    Point_3 q(parse_number("source x", o.source_point_text[0]),
-              parse_number("source y", o.source_point_text[1]),
-              parse_number("source z", o.source_point_text[2]));
-    const face_descriptor f(Mesh::size_type(*o.source_face));
-    const std::pair<face_descriptor, std::array<double, 3> > loc(f, locate_in_face(mesh, f, q));
-    ridge = compute(loc);
-  }
-  const auto& r = ridge->rough_cut_locus;
-  const auto& s = r.statistics;
-  const auto& g = ridge->statistics;
+  if(*o.source_face >= mesh.number_of_faces())
+    throw Geodesic_ridge::Invalid_source_error(
+        "source face " + std::to_string(*o.source_face) + " is out of range: the mesh has " +
+        std::to_string(mesh.number_of_faces()) + " faces");
+  const Point_3 q(parse_number("source x", o.source_point_text[0]),
+                  parse_number("source y", o.source_point_text[1]),
+                  parse_number("source z", o.source_point_text[2]));
+  return compute(locate(mesh, face_descriptor(Mesh::size_type(*o.source_face)), q));
+}
+
+void print_summary(const Options& o, const Ridge& ridge)
+{
+  const auto& s = ridge.rough_cut_locus.statistics;
+  const auto& g = ridge.statistics;
   std::cout << "mesh " << o.mesh << ": " << s.number_of_vertices << " vertices, "
             << s.number_of_faces << " faces, genus " << s.genus << "\n"
             << "rough cut locus (tolerance " << o.tolerance << "): " << s.number_of_kept_dual_edges
@@ -524,171 +530,196 @@ int run(const Options& o)
             << "extended surface: " << g.extended_surface.number_of_faces << " faces ("
             << double(g.extended_surface.number_of_faces) / s.number_of_faces << " x), "
             << g.extended_surface.rings << " rings, " << g.solves << " " << g.solver << " solves\n"
-            << "ridge: " << ridge->polylines.size() << " polylines, " << g.ridge.junctions << " junctions, "
+            << "ridge: " << ridge.polylines.size() << " polylines, " << g.ridge.junctions << " junctions, "
             << g.ridge.free_ends << " free ends, " << g.ridge.cycles << " cycles, length "
             << g.ridge.total_length << "; " << g.time_total << " s\n";
-  // the ridge written and drawn: with the cone field, the cones' own
-  const auto& reported = o.field == Geodesic_ridge::Field::cone ? ridge->cone_polylines : ridge->polylines;
   if(o.field == Geodesic_ridge::Field::cone)
     std::cout << "cone ridge: " << g.cone_ridge.points_moved << " points and " << g.cone_ridge.junctions_moved
               << " junctions moved onto the cones' curves, " << g.cone_ridge.points_kept << " kept, "
               << g.cone_ridge.points_added << " added (tolerance " << g.cone_ridge.tolerance << ")\n";
-  // the region-wise field, and the refined mesh where something needs it
-  // queries answer from the chosen field; the rest is linear
-  const auto field = Geodesic_ridge::make_distance_field(mesh, *ridge);
-  std::optional<std::decay_t<decltype(field)> > cone_field;
-  if(o.field == Geodesic_ridge::Field::cone)
-    cone_field = Geodesic_ridge::make_distance_field(mesh, *ridge, Geodesic_ridge::parameters::field(o.field));
-  const auto& query_field = cone_field ? *cone_field : field;
-  Mesh refined;
-  std::optional<Geodesic_ridge::Refined_mesh_statistics> refined_stats;
-  auto refined_distance = refined.add_property_map<vertex_descriptor, double>("v:distance", 0).first;
-  if(!o.refined.empty() || !o.png.empty() || (!o.isolines.empty() && !o.isolines_from_vertices))
+}
+
+// The mesh split along the ridge, with a distance per vertex, the input face of
+// each face ("f:source_face") and the ridge's edges ("e:ridge").
+Geodesic_ridge::Refined_mesh_statistics refine(const Mesh& mesh, const Ridge& ridge, Mesh& refined,
+                                               Distance_map distance)
+{
+  auto source_face = refined.add_property_map<face_descriptor, std::int32_t>("f:source_face", -1).first;
+  auto on_ridge = refined.add_property_map<Mesh::Edge_index, bool>("e:ridge", false).first;
+  struct Record_source_face
   {
-    auto source_face = refined.add_property_map<face_descriptor, std::int32_t>("f:source_face", -1).first;
-    auto on_ridge = refined.add_property_map<Mesh::Edge_index, bool>("e:ridge", false).first;
-    struct Record_source_face
+    Mesh::Property_map<face_descriptor, std::int32_t> map;
+    void face_created(face_descriptor original, face_descriptor created)
+    { map[created] = static_cast<std::int32_t>(std::size_t(original)); }
+  } visitor{source_face};
+  const auto st = Geodesic_ridge::refine_mesh_along_ridge(
+      mesh, ridge, refined, CGAL::parameters::default_values(),
+      Geodesic_ridge::parameters::vertex_distance_map(distance).edge_is_constrained_map(on_ridge).visitor(visitor));
+  std::cout << "refined mesh: " << st.faces << " faces (" << st.split_faces
+            << " faces of the mesh split), largest disagreement " << st.largest_disagreement << "\n";
+  if(st.unmatched_ridge_segments > 0)
+    throw Geodesic_ridge::Algorithm_error(std::to_string(st.unmatched_ridge_segments) +
+                                          " ridge segments are not edges of the refined mesh");
+  return st;
+}
+
+void write_refined(const std::string& filename, const Mesh& refined, bool ascii)
+{
+  std::ofstream os(filename, std::ios::binary);
+  if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
+  if(ascii) CGAL::IO::set_ascii_mode(os);
+  else CGAL::IO::set_binary_mode(os);
+  // the ridge flags stay in memory: PLY readers disagree on edge elements
+  Mesh copy = refined;
+  auto ridge_flags = copy.property_map<Mesh::Edge_index, bool>("e:ridge").first;
+  copy.remove_property_map(ridge_flags);
+  os.precision(17);
+  if(!CGAL::IO::write_PLY(os, copy, "geodesic distance field, refined along the geodesic ridge") || !os)
+    throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+  std::cout << "wrote " << filename << " (" << refined.number_of_faces() << " faces, vertex property 'distance', "
+            << "face property 'source_face')\n";
+}
+
+void write_ridge_locations(const std::string& filename, const Ridge_polylines& ridge)
+{
+  std::ofstream os(filename);
+  if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
+  os << "# FACE B0 B1 B2 ANGLE: a ridge point, barycentric in the file order of the face's vertices;\n"
+        "# ANGLE: degrees between the two fronts; one polyline after another, '# polyline' between\n";
+  os.precision(17);
+  std::size_t points = 0;
+  for(const auto& pl : ridge)
+  {
+    os << "# polyline\n";
+    for(const auto& p : pl)
     {
-      Mesh::Property_map<face_descriptor, std::int32_t> map;
-      void face_created(face_descriptor original, face_descriptor created)
-      { map[created] = static_cast<std::int32_t>(std::size_t(original)); }
-    } visitor{source_face};
-    refined_stats = Geodesic_ridge::refine_mesh_along_ridge(
-        mesh, *ridge, refined, CGAL::parameters::default_values(),
-        Geodesic_ridge::parameters::vertex_distance_map(refined_distance)
-            .edge_is_constrained_map(on_ridge)
-            .visitor(visitor));
-    std::cout << "refined mesh: " << refined_stats->faces << " faces (" << refined_stats->split_faces
-              << " faces of the mesh split), largest disagreement " << refined_stats->largest_disagreement << "\n";
-    if(refined_stats->unmatched_ridge_segments > 0)
-      throw Geodesic_ridge::Algorithm_error(std::to_string(refined_stats->unmatched_ridge_segments) +
-                                            " ridge segments are not edges of the refined mesh");
-  }
-  if(!o.refined.empty())
-  {
-    std::ofstream os(o.refined, std::ios::binary);
-    if(!os) throw Geodesic_ridge::Error("cannot open '" + o.refined + "' for writing");
-    if(o.ply_ascii) CGAL::IO::set_ascii_mode(os);
-    else CGAL::IO::set_binary_mode(os);
-    // the ridge flags stay in memory: PLY readers disagree on edge elements
-    Mesh copy = refined;
-    auto ridge_flags = copy.property_map<Mesh::Edge_index, bool>("e:ridge").first;
-    copy.remove_property_map(ridge_flags);
-    os.precision(17);
-    if(!CGAL::IO::write_PLY(os, copy, "geodesic distance field, refined along the geodesic ridge") || !os)
-      throw Geodesic_ridge::Error("cannot write '" + o.refined + "'");
-    std::cout << "wrote " << o.refined << " (" << refined.number_of_faces() << " faces, vertex property 'distance', "
-              << "face property 'source_face')\n";
-  }
-  if(!o.ridge_locations.empty())
-  {
-    std::ofstream os(o.ridge_locations);
-    if(!os) throw Geodesic_ridge::Error("cannot open '" + o.ridge_locations + "' for writing");
-    os << "# FACE B0 B1 B2 ANGLE: a ridge point, barycentric in the file order of the face's vertices;\n"
-          "# ANGLE: degrees between the two fronts; one polyline after another, '# polyline' between\n";
-    os.precision(17);
-    std::size_t points = 0;
-    for(const auto& pl : reported)
-    {
-      os << "# polyline\n";
-      for(const auto& p : pl)
-      {
-        const auto b = location_to_file_order(p.barycentric);
-        os << p.face << ' ' << b[0] << ' ' << b[1] << ' ' << b[2] << ' ' << p.angle << '\n';
-        ++points;
-      }
+      const auto b = location_to_file_order(p.barycentric);
+      os << p.face << ' ' << b[0] << ' ' << b[1] << ' ' << b[2] << ' ' << p.angle << '\n';
+      ++points;
     }
-    os.flush();
-    if(!os) throw Geodesic_ridge::Error("cannot write '" + o.ridge_locations + "'");
-    std::cout << "wrote " << o.ridge_locations << " (" << points << " ridge points)\n";
   }
-  if(!o.query.empty())
+  os.flush();
+  if(!os) throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+  std::cout << "wrote " << filename << " (" << points << " ridge points)\n";
+}
+
+template <class Field>
+void write_distances(const std::string& filename, const Field& field, const std::vector<Location>& queries)
+{
+  std::vector<double> distances;
+  distances.reserve(queries.size());
+  field.distances(queries, std::back_inserter(distances));
+  std::ofstream os(filename);
+  if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
+  os.precision(17);
+  for(double d : distances) os << d << '\n';
+  os.flush();
+  if(!os) throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+  std::cout << "wrote " << filename << " (" << distances.size() << " distances)\n";
+}
+
+// Iso-lines of the refined mesh's distances or, from the vertices, of the linear
+// interpolation of `vertex_distance` on the mesh.
+template <class VertexDistance>
+void contour(const Options& o, const Mesh& contoured, const VertexDistance& vertex_distance)
+{
+  double largest = 0;
+  for(vertex_descriptor v : contoured.vertices()) largest = std::max(largest, vertex_distance(v));
+  const std::vector<double> levels =
+      o.isoline_count ? Geodesic_ridge::equally_spaced_levels(*o.isoline_count, largest) : o.isoline_values;
+  std::vector<double> values(contoured.number_of_vertices());
+  for(vertex_descriptor v : contoured.vertices()) values[std::size_t(v)] = vertex_distance(v);
+  std::vector<Geodesic_ridge::Isoline<Point_3> > lines;
+  Geodesic_ridge::isolines(contoured, CGAL::make_property_map(values), levels, std::back_inserter(lines));
+  write_isolines(o.isolines, lines);
+  std::cout << "wrote " << o.isolines << " (" << lines.size() << " iso-lines at " << levels.size() << " levels, from "
+            << (o.isolines_from_vertices ? "the vertex distances" : "the region-wise field") << ")\n";
+}
+
+std::vector<std::vector<Point_3> > points_of(const Ridge_polylines& ridge)
+{
+  std::vector<std::vector<Point_3> > polylines;
+  for(const auto& pl : ridge)
   {
-    std::vector<double> distances;
-    distances.reserve(queries.size());
-    query_field.distances(queries, std::back_inserter(distances));
-    std::ofstream os(o.query_out);
-    if(!os) throw Geodesic_ridge::Error("cannot open '" + o.query_out + "' for writing");
-    os.precision(17);
-    for(double d : distances) os << d << '\n';
-    os.flush();
-    if(!os) throw Geodesic_ridge::Error("cannot write '" + o.query_out + "'");
-    std::cout << "wrote " << o.query_out << " (" << distances.size() << " distances)\n";
+    polylines.emplace_back();
+    for(const auto& p : pl) polylines.back().push_back(p.point);
   }
-  if(!o.isolines.empty())
+  return polylines;
+}
+
+void write_picture(const std::string& filename, const Mesh& mesh, const Ridge& ridge,
+                   const std::vector<std::vector<Point_3> >& reported, const Mesh& refined, Distance_map distance)
+{
+  std::vector<Geodesic_ridge::IO::Png_curves<Point_3> > curves(3);
+  Geodesic_ridge::cut_graph_polylines(mesh, ridge.rough_cut_locus, std::back_inserter(curves[0].polylines));
+  curves[0].rgb = {{235, 235, 235}};
+  curves[0].width_pixels = 1;
+  curves[1].polylines = reported;
+  curves[1].width_pixels = 3;
+  // the source: a small cross
+  const Point_3 src = PMP::construct_point(ridge.rough_cut_locus.source.location, mesh);
+  const auto box = CGAL::bounding_box(mesh.points().begin(), mesh.points().end());
+  const double arm = 0.015 * std::sqrt(CGAL::squared_distance(box.min(), box.max()));
+  for(int k = 0; k < 3; ++k)
   {
-    std::vector<Geodesic_ridge::Isoline<Point_3> > lines;
-    const Mesh& contoured = o.isolines_from_vertices ? mesh : refined;
-    auto vertex_distance = [&](vertex_descriptor v) {
-      return o.isolines_from_vertices ? field.distance(v) : refined_distance[v];
-    };
-    double largest = 0;
-    for(vertex_descriptor v : contoured.vertices()) largest = std::max(largest, vertex_distance(v));
-    const std::vector<double> levels =
-        o.isoline_count ? Geodesic_ridge::equally_spaced_levels(*o.isoline_count, largest) : o.isoline_values;
-    std::vector<double> values(contoured.number_of_vertices());
-    for(vertex_descriptor v : contoured.vertices()) values[std::size_t(v)] = vertex_distance(v);
-    Geodesic_ridge::isolines(contoured, CGAL::make_property_map(values), levels, std::back_inserter(lines));
-    write_isolines(o.isolines, lines);
-    std::cout << "wrote " << o.isolines << " (" << lines.size() << " iso-lines at " << levels.size() << " levels, from "
-              << (o.isolines_from_vertices ? "the vertex distances" : "the region-wise field") << ")\n";
+    const double dx = k == 0 ? arm : 0, dy = k == 1 ? arm : 0, dz = k == 2 ? arm : 0;
+    curves[2].polylines.push_back({Point_3(src.x() - dx, src.y() - dy, src.z() - dz),
+                                   Point_3(src.x() + dx, src.y() + dy, src.z() + dz)});
   }
+  curves[2].rgb = {{20, 170, 40}};
+  curves[2].width_pixels = 5;
+  double largest = 0;
+  for(vertex_descriptor v : refined.vertices()) largest = std::max(largest, distance[v]);
+  Geodesic_ridge::IO::write_png(filename, refined, refined.points(), distance, largest, 20, curves);
+  std::cout << "wrote " << filename << "\n";
+}
+
+int run(const Options& o)
+{
+  namespace p = Geodesic_ridge::parameters;
+  const auto t0 = std::chrono::steady_clock::now();
+  Mesh mesh;
+  Geodesic_ridge::IO::read_triangle_mesh(o.mesh, mesh);
+  const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // bad queries are reported before the ridge is computed
+  const auto queries = o.query.empty() ? std::vector<Location>() : read_queries(o.query, mesh, o.query_barycentric);
+  const Ridge ridge = compute(mesh, o);
+  print_summary(o, ridge);
+  // the ridge written and drawn: with the cone field, the cones' own
+  const auto& reported = o.field == Geodesic_ridge::Field::cone ? ridge.cone_polylines : ridge.polylines;
+  // queries answer from the chosen field; the rest is linear
+  const auto field = Geodesic_ridge::make_distance_field(mesh, ridge);
+  Mesh refined;
+  const auto refined_distance = refined.add_property_map<vertex_descriptor, double>("v:distance", 0).first;
+  std::optional<Geodesic_ridge::Refined_mesh_statistics> refined_stats;
+  if(!o.refined.empty() || !o.png.empty() || (!o.isolines.empty() && !o.isolines_from_vertices))
+    refined_stats = refine(mesh, ridge, refined, refined_distance);
+  if(!o.refined.empty()) write_refined(o.refined, refined, o.ply_ascii);
+  if(!o.ridge_locations.empty()) write_ridge_locations(o.ridge_locations, reported);
+  if(!o.query.empty() && o.field == Geodesic_ridge::Field::cone)
+    write_distances(o.query_out, Geodesic_ridge::make_distance_field(mesh, ridge, p::field(o.field)), queries);
+  else if(!o.query.empty())
+    write_distances(o.query_out, field, queries);
+  if(!o.isolines.empty() && o.isolines_from_vertices)
+    contour(o, mesh, [&](vertex_descriptor v) { return field.distance(v); });
+  else if(!o.isolines.empty())
+    contour(o, refined, [&](vertex_descriptor v) { return refined_distance[v]; });
   if(!o.ridge.empty())
   {
-    std::vector<std::vector<Point_3> > polylines;
-    for(const auto& pl : reported)
-    {
-      polylines.emplace_back();
-      for(const auto& p : pl) polylines.back().push_back(p.point);
-    }
-    Geodesic_ridge::IO::write_polylines(o.ridge, polylines);
-    std::cout << "wrote " << o.ridge << " (" << polylines.size() << " polylines)\n";
+    Geodesic_ridge::IO::write_polylines(o.ridge, points_of(reported));
+    std::cout << "wrote " << o.ridge << " (" << reported.size() << " polylines)\n";
   }
   if(!o.rough_cut.empty())
   {
     std::vector<std::vector<Point_3> > polylines;
-    Geodesic_ridge::cut_graph_polylines(mesh, r, std::back_inserter(polylines));
+    Geodesic_ridge::cut_graph_polylines(mesh, ridge.rough_cut_locus, std::back_inserter(polylines));
     Geodesic_ridge::IO::write_polylines(o.rough_cut, polylines);
     std::cout << "wrote " << o.rough_cut << " (" << polylines.size() << " polylines)\n";
   }
-  if(!o.png.empty())
-  {
-    std::vector<Geodesic_ridge::IO::Png_curves<Point_3> > curves(3);
-    Geodesic_ridge::cut_graph_polylines(mesh, r, std::back_inserter(curves[0].polylines));
-    curves[0].rgb = {{235, 235, 235}};
-    curves[0].width_pixels = 1;
-    for(const auto& pl : reported)
-    {
-      curves[1].polylines.emplace_back();
-      for(const auto& p : pl) curves[1].polylines.back().push_back(p.point);
-    }
-    curves[1].width_pixels = 3;
-    // the source: a small cross
-    const auto& loc = r.source.location;
-    const auto h = mesh.halfedge(loc.first);
-    const Point_3 a = mesh.point(mesh.source(h)), b = mesh.point(mesh.target(h)), c = mesh.point(mesh.target(mesh.next(h)));
-    const Point_3 src(loc.second[0] * a.x() + loc.second[1] * b.x() + loc.second[2] * c.x(),
-                      loc.second[0] * a.y() + loc.second[1] * b.y() + loc.second[2] * c.y(),
-                      loc.second[0] * a.z() + loc.second[1] * b.z() + loc.second[2] * c.z());
-    const double arm = 0.015 * std::sqrt(CGAL::squared_distance(
-        CGAL::bounding_box(mesh.points().begin(), mesh.points().end()).min(),
-        CGAL::bounding_box(mesh.points().begin(), mesh.points().end()).max()));
-    for(int k = 0; k < 3; ++k)
-    {
-      const double dx = k == 0 ? arm : 0, dy = k == 1 ? arm : 0, dz = k == 2 ? arm : 0;
-      curves[2].polylines.push_back({Point_3(src.x() - dx, src.y() - dy, src.z() - dz),
-                                     Point_3(src.x() + dx, src.y() + dy, src.z() + dz)});
-    }
-    curves[2].rgb = {{20, 170, 40}};
-    curves[2].width_pixels = 5;
-    double largest = 0;
-    for(vertex_descriptor v : refined.vertices()) largest = std::max(largest, refined_distance[v]);
-    Geodesic_ridge::IO::write_png(o.png, refined, refined.points(), refined_distance, largest, 20, curves);
-    std::cout << "wrote " << o.png << "\n";
-  }
+  if(!o.png.empty()) write_picture(o.png, mesh, ridge, points_of(reported), refined, refined_distance);
   if(!o.stats.empty())
   {
-    write_stats(o.stats, o, *ridge, read_seconds, refined_stats ? &*refined_stats : nullptr);
+    write_stats(o.stats, o, ridge, read_seconds, refined_stats ? &*refined_stats : nullptr);
     std::cout << "wrote " << o.stats << "\n";
   }
   return 0;
@@ -700,7 +731,8 @@ int main(int argc, char** argv)
 {
   try
   {
-    return run(parse(argc, argv));
+    const Options o = parse(argc, argv);
+    return o.help ? 0 : run(o);
   }
   catch(const Usage_error& e)
   {

@@ -4,7 +4,8 @@
 # prints the one apt-get line to run. Exit status 0 iff everything is there.
 #   --doc   also the packages that build the manual (scripts/build_manual.sh)
 set -euo pipefail
-packages=(g++ make cmake libcgal-dev libboost-graph-dev libgmp-dev libmpfr-dev catch2 libeigen3-dev ccache)
+packages=(g++ make cmake libcgal-dev libboost-graph-dev libgmp-dev libmpfr-dev catch2 libeigen3-dev ccache
+          libboost-program-options-dev nlohmann-json3-dev libpng-dev)
 if [ "${1:-}" = "--doc" ]; then packages+=(doxygen graphviz); fi
 missing=()
 for p in "${packages[@]}"; do

@@ -91,3 +91,16 @@ cli_failure(query_without_out     "--query and --query-out go together" ${CLI} $
 cli_failure(isolines_zero         "iso-line count must be positive" ${CLI} ${D}/torus_1k.off --source-vertex 0 --isolines 0 ${OUTDIR}/i.txt)
 cli_failure(isoline_values_bad    "iso-line value 'x' is not a finite number" ${CLI} ${D}/torus_1k.off --source-vertex 0 --isoline-values 0.1,x ${OUTDIR}/i.txt)
 cli_failure(unwritable_refined    "cannot open" ${CLI} ${D}/torus_1k.off --source-vertex 0 --refined /nonexistent-dir/x.ply)
+
+# The picture, decoded by libpng (not by our encoder): size and content.
+add_executable(png_check ${CMAKE_CURRENT_SOURCE_DIR}/cli/png_check.cpp)
+target_link_libraries(png_check PRIVATE PNG::PNG)
+target_compile_options(png_check PRIVATE -Wall -Wextra ${GR_SANITIZE_FLAGS})
+target_link_options(png_check PRIVATE ${GR_SANITIZE_FLAGS})
+function(cli_png mesh)
+  add_test(NAME cli.png.${mesh}
+           COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DCHECK=$<TARGET_FILE:png_check> -DMESH=${D}/${mesh}.off
+                   -DOUT=${OUTDIR}/png "-DEXTRA=${ARGN}" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_png.cmake)
+endfunction()
+cli_png(torus_1k)
+cli_png(eight --solver fmm)

@@ -1,9 +1,10 @@
 // Copyright (c) 2026 Geodesic_ridge developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A picture of a mesh with curves on it, as a PNG, with no dependency: a small
-// z-buffer rasterizer (orthographic, two opposite views side by side, so that a
-// ridge on the far side shows too) and an uncompressed PNG writer.
+// A picture of a mesh with curves on it, as a PNG: a small z-buffer rasterizer
+// (orthographic, two opposite views side by side, so that a ridge on the far
+// side shows too); libpng encodes it. Programs that call write_png link libpng
+// (CMake: find_package(PNG), PNG::PNG); including the header needs only <png.h>.
 #ifndef GEODESIC_RIDGE_IO_PNG_H
 #define GEODESIC_RIDGE_IO_PNG_H
 
@@ -12,12 +13,15 @@
 #include <CGAL/number_utils.h>
 #include <boost/graph/graph_traits.hpp>
 
+#include <png.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
-#include <fstream>
+#include <cstdio>
+#include <cstring>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,77 +40,29 @@ struct Png_curves
 
 namespace internal_png {
 
-inline std::uint32_t crc32(const unsigned char* data, std::size_t n, std::uint32_t crc = 0xffffffffu)
+struct Close_file
 {
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    crc ^= data[i];
-    for(int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
-  }
-  return crc;
-}
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
 
-inline void put32(std::vector<unsigned char>& out, std::uint32_t v)
-{
-  for(int s = 24; s >= 0; s -= 8) out.push_back(static_cast<unsigned char>(v >> s));
-}
-
-inline void chunk(std::ofstream& os, const char* type, const std::vector<unsigned char>& data)
-{
-  std::vector<unsigned char> buf;
-  put32(buf, static_cast<std::uint32_t>(data.size()));
-  buf.insert(buf.end(), type, type + 4);
-  buf.insert(buf.end(), data.begin(), data.end());
-  const std::uint32_t crc = crc32(buf.data() + 4, buf.size() - 4) ^ 0xffffffffu;
-  put32(buf, crc);
-  os.write(reinterpret_cast<const char*>(buf.data()), static_cast<std::streamsize>(buf.size()));
-}
-
-// RGB image, rows top to bottom; zlib stream of stored (uncompressed) blocks.
+// RGB image, rows top to bottom, compressed by libpng (its simplified API
+// reports errors by return value, so no longjmp crosses C++ frames).
 inline void write_rgb_png(const std::string& filename, int w, int h, const std::vector<unsigned char>& rgb)
 {
-  std::ofstream os(filename, std::ios::binary);
-  if(!os) throw Error("cannot open '" + filename + "' for writing");
-  const unsigned char signature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-  os.write(reinterpret_cast<const char*>(signature), 8);
-  std::vector<unsigned char> ihdr;
-  put32(ihdr, static_cast<std::uint32_t>(w));
-  put32(ihdr, static_cast<std::uint32_t>(h));
-  ihdr.insert(ihdr.end(), {8, 2, 0, 0, 0}); // 8-bit RGB
-  chunk(os, "IHDR", ihdr);
-  std::vector<unsigned char> raw;
-  raw.reserve(static_cast<std::size_t>(h) * (3 * w + 1));
-  for(int y = 0; y < h; ++y)
-  {
-    raw.push_back(0); // filter: none
-    raw.insert(raw.end(), rgb.begin() + static_cast<std::ptrdiff_t>(3 * w * y),
-               rgb.begin() + static_cast<std::ptrdiff_t>(3 * w * (y + 1)));
-  }
-  std::vector<unsigned char> z = {0x78, 0x01};
-  std::uint32_t a = 1, b = 0;
-  for(unsigned char c : raw) { a = (a + c) % 65521u; b = (b + a) % 65521u; }
-  for(std::size_t pos = 0; pos < raw.size() || pos == 0;)
-  {
-    const std::size_t n = std::min<std::size_t>(65535, raw.size() - pos);
-    const bool last = pos + n == raw.size();
-    z.push_back(last ? 1 : 0);
-    z.push_back(static_cast<unsigned char>(n & 0xff));
-    z.push_back(static_cast<unsigned char>(n >> 8));
-    z.push_back(static_cast<unsigned char>(~n & 0xff));
-    z.push_back(static_cast<unsigned char>((~n >> 8) & 0xff));
-    z.insert(z.end(), raw.begin() + static_cast<std::ptrdiff_t>(pos), raw.begin() + static_cast<std::ptrdiff_t>(pos + n));
-    pos += n;
-    if(last) break;
-  }
-  put32(z, (b << 16) | a);
-  chunk(os, "IDAT", z);
-  chunk(os, "IEND", {});
-  if(!os) throw Error("cannot write '" + filename + "'");
+  std::unique_ptr<std::FILE, Close_file> file(std::fopen(filename.c_str(), "wb"));
+  if(!file) throw Error("cannot open '" + filename + "' for writing");
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = static_cast<png_uint_32>(w);
+  image.height = static_cast<png_uint_32>(h);
+  image.format = PNG_FORMAT_RGB;
+  const bool written = png_image_write_to_stdio(&image, file.get(), 0, rgb.data(), 3 * w, nullptr) != 0;
+  const std::string message = image.message;
+  png_image_free(&image);
+  if(!written) throw Error("cannot write '" + filename + "': " + message);
+  if(std::fclose(file.release()) != 0) throw Error("cannot write '" + filename + "'");
 }
-
-} // namespace internal_png
-
-namespace internal_png {
 
 // Draws the mesh, coloured by colour(halfedge of the face, w0, w1, w2, shade)
 // at each pixel (w: the weights of source(h), target(h), target(next(h))), and
