@@ -367,96 +367,118 @@ template <class FT, class R> FT ring_to(const R& x) { return FT(x); }
 template <> inline CGAL::Gmpq ring_to<CGAL::Gmpq, CGAL::Mpzf>(const CGAL::Mpzf& x) { return static_cast<CGAL::Gmpq>(x); }
 #endif
 
-template <class FT, class R = typename Ring_type<FT>::type>
-Lower_envelope<FT> compute(const std::vector<std::array<double, 3>>& d)
+// λ = w / (w0 + w1 + w2) in FT. With an exact FT the last nonzero coordinate
+// is 1 minus the others (so they sum to 1 exactly), and a triangle corner
+// needs no arithmetic at all; an inexact w is already normalized (R is FT).
+template <class FT, class R>
+std::array<FT, 3> normalized(const Vertex<R>& v)
 {
-  const std::size_t m = d.size();
-  if(m == 0)
-    throw Invalid_parameter_error("compute_lower_envelope: no copy of the face (at least one is needed)");
-  for(std::size_t i = 0; i < m; ++i)
-    for(int k = 0; k < 3; ++k)
-      if(!std::isfinite(d[i][k]))
-        throw Invalid_parameter_error("compute_lower_envelope: distance " + std::to_string(k) +
-                                      " of copy " + std::to_string(i) + " is not finite");
+  if constexpr(is_exact<FT>()) {
+    std::array<FT, 3> lambda = {{FT(0), FT(0), FT(0)}};
+    int last = -1;
+    for(int k = 0; k < 3; ++k) if(!CGAL::is_zero(v.w[k])) last = k;
+    const FT s = ring_to<FT>(R(v.w[0] + v.w[1] + v.w[2]));
+    FT rest(1);
+    for(int k = 0; k < last; ++k)
+      if(!CGAL::is_zero(v.w[k])) { lambda[k] = ring_to<FT>(v.w[k]) / s; rest -= lambda[k]; }
+    lambda[last] = rest;
+    return lambda;
+  } else {
+    return v.w;
+  }
+}
 
-  // Dominance, decided on the input doubles (exact): i never has a 2D cell if
-  // some j is ≤ it at the three corners (and j < i when they are equal).
-  auto dominates = [&](std::size_t j, std::size_t i) {
+// The steps of `compute_lower_envelope()`: drop the dominated copies, form the
+// bisector vectors, clip one cell per remaining copy, then read the segments
+// off the cells. FT is the output number type, R the ring the clipping runs in.
+template <class FT, class R>
+class Envelope_builder
+{
+public:
+  explicit Envelope_builder(const std::vector<std::array<double, 3>>& d) : d_(d), m_(d.size()) {}
+
+  Lower_envelope<FT> run()
+  {
+    check_input();
+    find_undominated_copies();
+    compute_bisectors();
+    std::vector<std::size_t> cell_order(alive_);
+    std::sort(cell_order.begin(), cell_order.end());
+    for(std::size_t i : cell_order)
+      add_cell(i);
+    add_segments();
+    return std::move(result_);
+  }
+
+private:
+  void check_input() const
+  {
+    if(m_ == 0)
+      throw Invalid_parameter_error("compute_lower_envelope: no copy of the face (at least one is needed)");
+    for(std::size_t i = 0; i < m_; ++i)
+      for(int k = 0; k < 3; ++k)
+        if(!std::isfinite(d_[i][k]))
+          throw Invalid_parameter_error("compute_lower_envelope: distance " + std::to_string(k) +
+                                        " of copy " + std::to_string(i) + " is not finite");
+  }
+
+  // Decided on the input doubles (exact): i never has a 2D cell if j is ≤ it
+  // at the three corners (and j < i when they are equal).
+  bool dominates(std::size_t j, std::size_t i) const
+  {
     bool equal = true;
     for(int k = 0; k < 3; ++k) {
-      if(d[j][k] > d[i][k]) return false;
-      if(d[j][k] != d[i][k]) equal = false;
+      if(d_[j][k] > d_[i][k]) return false;
+      if(d_[j][k] != d_[i][k]) equal = false;
     }
     return !equal || j < i;
-  };
-  std::vector<std::size_t> alive; // undominated copies; they dominate all others
-  for(std::size_t i = 0; i < m; ++i) {
-    bool dominated = false;
-    for(std::size_t j = 0; j < m && !dominated; ++j) dominated = (j != i && dominates(j, i));
-    if(!dominated) alive.push_back(i);
   }
-  // Clip first by the copies that are low on average: cells shrink sooner.
-  std::sort(alive.begin(), alive.end(), [&](std::size_t a, std::size_t b) {
-    const double sa = d[a][0] + d[a][1] + d[a][2], sb = d[b][0] + d[b][1] + d[b][2];
-    return sa < sb || (sa == sb && a < b);
-  });
+
+  // The undominated copies (they dominate all others), lowest on average
+  // first: clipping by them first shrinks the cells sooner.
+  void find_undominated_copies()
+  {
+    for(std::size_t i = 0; i < m_; ++i) {
+      bool dominated = false;
+      for(std::size_t j = 0; j < m_ && !dominated; ++j) dominated = (j != i && dominates(j, i));
+      if(!dominated) alive_.push_back(i);
+    }
+    std::sort(alive_.begin(), alive_.end(), [&](std::size_t a, std::size_t b) {
+      const double sa = d_[a][0] + d_[a][1] + d_[a][2], sb = d_[b][0] + d_[b][1] + d_[b][2];
+      return sa < sb || (sa == sb && a < b);
+    });
+  }
 
   // Bisector vectors e(i,j) = d^i − d^j: f_i − f_j = e(i,j)·λ, exact.
-  const std::size_t n_alive = alive.size();
-  std::vector<std::size_t> slot(m, m);
-  for(std::size_t s = 0; s < n_alive; ++s) slot[alive[s]] = s;
-  std::vector<std::array<R, 3>> D(n_alive);
-  for(std::size_t s = 0; s < n_alive; ++s)
-    for(int k = 0; k < 3; ++k) D[s][k] = R(d[alive[s]][k]);
-  std::vector<std::array<R, 3>> E(n_alive * n_alive);
-  for(std::size_t a = 0; a < n_alive; ++a)
-    for(std::size_t b = a + 1; b < n_alive; ++b)
-      for(int k = 0; k < 3; ++k) {
-        E[a * n_alive + b][k] = D[a][k] - D[b][k];
-        E[b * n_alive + a][k] = -E[a * n_alive + b][k];
-      }
+  void compute_bisectors()
+  {
+    n_alive_ = alive_.size();
+    slot_.assign(m_, m_);
+    for(std::size_t s = 0; s < n_alive_; ++s) slot_[alive_[s]] = s;
+    std::vector<std::array<R, 3>> D(n_alive_);
+    for(std::size_t s = 0; s < n_alive_; ++s)
+      for(int k = 0; k < 3; ++k) D[s][k] = R(d_[alive_[s]][k]);
+    E_.resize(n_alive_ * n_alive_);
+    for(std::size_t a = 0; a < n_alive_; ++a)
+      for(std::size_t b = a + 1; b < n_alive_; ++b)
+        for(int k = 0; k < 3; ++k) {
+          E_[a * n_alive_ + b][k] = D[a][k] - D[b][k];
+          E_[b * n_alive_ + a][k] = -E_[a * n_alive_ + b][k];
+        }
+  }
 
-  Lower_envelope<FT> result;
-  std::vector<std::size_t> cell_order(alive);
-  std::sort(cell_order.begin(), cell_order.end());
-  for(std::size_t i : cell_order) {
-    const std::size_t si = slot[i];
-    auto line_of = [&](std::size_t j) -> const std::array<R, 3>& { return E[si * n_alive + slot[j]]; };
+  // e(i,j) for the copy i of slot si
+  const std::array<R, 3>& bisector(std::size_t si, std::size_t j) const { return E_[si * n_alive_ + slot_[j]]; }
 
-    std::vector<Vertex<R>> poly(3);
-    for(int k = 0; k < 3; ++k) {
-      poly[k].w = {{R(0), R(0), R(0)}};
-      poly[k].w[k] = R(1);
-      poly[k].s_sign = 1;
-    }
-    std::vector<std::size_t> label = {triangle_edge_label(0), triangle_edge_label(1), triangle_edge_label(2)};
-    for(std::size_t j : alive) {
-      if(j == i) continue;
-      clip(poly, label, line_of(j), j, line_of);
-      if(poly.size() < 3) break;
-    }
-    if(poly.size() < 3) continue; // empty, a point or a segment
-
-    // An edge on a line where several fields meet f_i (f_j, f_k − f_i ∝ the
-    // same linear function) was labelled by whichever clipped last. Across it,
-    // the winner among those copies is the lowest at a triangle corner on the
-    // far side (their differences all vanish on the line), ties to the lower index.
-    for(std::size_t t = 0; t < label.size(); ++t) {
-      if(is_triangle_edge_label(label[t])) continue;
-      const std::size_t j = label[t];
-      const std::array<R, 3>& eij = line_of(j);
-      int c = -1;
-      for(int k = 0; k < 3 && c < 0; ++k)
-        if(CGAL::is_positive(eij[k])) c = k; // f_i > f_j at corner k: the far side
-      if(c < 0) continue; // cannot happen for an edge inside the triangle
-      std::size_t best = j;
-      for(std::size_t k : alive) {
-        if(k == i || k == j || !is_parallel(line_of(k), eij)) continue;
-        if(d[k][c] < d[best][c] || (d[k][c] == d[best][c] && k < best)) best = k;
-      }
-      label[t] = best;
-    }
-
+  // The cell of copy i, unless it has zero area (round-off slivers too with an
+  // inexact FT).
+  void add_cell(std::size_t i)
+  {
+    std::vector<Vertex<R>> poly;
+    std::vector<std::size_t> label;
+    clip_cell(i, poly, label);
+    if(poly.size() < 3) return; // empty, a point or a segment
+    relabel_shared_lines(i, label);
     Envelope_cell<FT> cell;
     cell.copy = i;
     cell.edge_label = label;
@@ -464,61 +486,111 @@ Lower_envelope<FT> compute(const std::vector<std::array<double, 3>>& d)
     cell.vertex_feature.reserve(poly.size());
     for(const Vertex<R>& v : poly) {
       cell.vertex_feature.push_back(feature_of(v.w));
-      if constexpr(is_exact<FT>()) {
-        // λ = w / (w0 + w1 + w2); the last nonzero coordinate is 1 minus the
-        // others (exact), and a triangle corner needs no arithmetic at all
-        std::array<FT, 3> lambda = {{FT(0), FT(0), FT(0)}};
-        int last = -1;
-        for(int k = 0; k < 3; ++k) if(!CGAL::is_zero(v.w[k])) last = k;
-        const FT s = ring_to<FT>(R(v.w[0] + v.w[1] + v.w[2]));
-        FT rest(1);
-        for(int k = 0; k < last; ++k)
-          if(!CGAL::is_zero(v.w[k])) { lambda[k] = ring_to<FT>(v.w[k]) / s; rest -= lambda[k]; }
-        lambda[last] = rest;
-        cell.polygon.push_back(lambda);
-      } else {
-        cell.polygon.push_back(v.w); // already normalized (R is FT here)
-      }
+      cell.polygon.push_back(normalized<FT>(v));
     }
     if constexpr(!is_exact<FT>()) {
-      if(!(barycentric_area(cell.polygon) > FT(0))) continue; // round-off sliver
+      if(!(barycentric_area(cell.polygon) > FT(0))) return;
     }
-    result.cells.push_back(std::move(cell));
+    result_.cells.push_back(std::move(cell));
   }
 
-  // Segments: the edge of cell i labelled j, reported from the lower copy.
-  // With an exact FT both cells have this edge, with the same endpoints; with
-  // an inexact one the higher copy reports it when the lower one does not.
-  std::set<std::pair<std::size_t, std::size_t>> reported;
-  auto add_segment = [&](const Envelope_cell<FT>& cell, std::size_t t, bool from_lower) {
+  // The triangle clipped by the half-planes where f_i ≤ f_j, stopping once
+  // less than a polygon remains.
+  void clip_cell(std::size_t i, std::vector<Vertex<R>>& poly, std::vector<std::size_t>& label) const
+  {
+    const std::size_t si = slot_[i];
+    auto line_of = [&](std::size_t j) -> const std::array<R, 3>& { return bisector(si, j); };
+    poly.resize(3);
+    for(int k = 0; k < 3; ++k) {
+      poly[k].w = {{R(0), R(0), R(0)}};
+      poly[k].w[k] = R(1);
+      poly[k].s_sign = 1;
+    }
+    label = {triangle_edge_label(0), triangle_edge_label(1), triangle_edge_label(2)};
+    for(std::size_t j : alive_) {
+      if(j == i) continue;
+      clip(poly, label, line_of(j), j, line_of);
+      if(poly.size() < 3) break;
+    }
+  }
+
+  // An edge on a line where several fields meet f_i (f_j, f_k − f_i ∝ the
+  // same linear function) was labelled by whichever clipped last. Across it,
+  // the winner among those copies is the lowest at a triangle corner on the
+  // far side (their differences all vanish on the line), ties to the lower index.
+  void relabel_shared_lines(std::size_t i, std::vector<std::size_t>& label) const
+  {
+    const std::size_t si = slot_[i];
+    for(std::size_t t = 0; t < label.size(); ++t) {
+      if(is_triangle_edge_label(label[t])) continue;
+      const std::size_t j = label[t];
+      const std::array<R, 3>& eij = bisector(si, j);
+      int c = -1;
+      for(int k = 0; k < 3 && c < 0; ++k)
+        if(CGAL::is_positive(eij[k])) c = k; // f_i > f_j at corner k: the far side
+      if(c < 0) continue; // cannot happen for an edge inside the triangle
+      std::size_t best = j;
+      for(std::size_t k : alive_) {
+        if(k == i || k == j || !is_parallel(bisector(si, k), eij)) continue;
+        if(d_[k][c] < d_[best][c] || (d_[k][c] == d_[best][c] && k < best)) best = k;
+      }
+      label[t] = best;
+    }
+  }
+
+  // Edge t of `cell` as a segment, reported from its lower copy (`from_lower`)
+  // or, reversed, from its higher one: copy_a is on the left.
+  void add_segment(const Envelope_cell<FT>& cell, std::size_t t, bool from_lower,
+                   std::set<std::pair<std::size_t, std::size_t>>& reported)
+  {
     const std::size_t n = cell.polygon.size(), t1 = (t + 1) % n;
     Envelope_segment<FT> s;
     s.copy_a = from_lower ? cell.copy : cell.edge_label[t];
     s.copy_b = from_lower ? cell.edge_label[t] : cell.copy;
-    // copy_a on the left: the cell's own edge if it is copy_a, reversed otherwise
     const std::size_t p = from_lower ? t : t1, q = from_lower ? t1 : t;
     s.endpoints = {{ cell.polygon[p], cell.polygon[q] }};
     s.endpoint_feature = {{ cell.vertex_feature[p], cell.vertex_feature[q] }};
     reported.insert(std::make_pair(s.copy_a, s.copy_b));
-    result.segments.push_back(std::move(s));
-  };
-  for(const Envelope_cell<FT>& cell : result.cells)
-    for(std::size_t t = 0; t < cell.edge_label.size(); ++t)
-      if(!is_triangle_edge_label(cell.edge_label[t]) && cell.copy < cell.edge_label[t])
-        add_segment(cell, t, true);
-  if constexpr(!is_exact<FT>()) {
-    for(const Envelope_cell<FT>& cell : result.cells)
-      for(std::size_t t = 0; t < cell.edge_label.size(); ++t) {
-        const std::size_t j = cell.edge_label[t];
-        if(!is_triangle_edge_label(j) && j < cell.copy && !reported.count(std::make_pair(j, cell.copy)))
-          add_segment(cell, t, false);
-      }
+    result_.segments.push_back(std::move(s));
   }
-  std::stable_sort(result.segments.begin(), result.segments.end(),
-                   [](const Envelope_segment<FT>& a, const Envelope_segment<FT>& b) {
-                     return a.copy_a < b.copy_a || (a.copy_a == b.copy_a && a.copy_b < b.copy_b);
-                   });
-  return result;
+
+  // The edge of cell i labelled j, reported from the lower copy. With an
+  // exact FT both cells have this edge, with the same endpoints; with an
+  // inexact one the higher copy reports it when the lower one does not.
+  void add_segments()
+  {
+    std::set<std::pair<std::size_t, std::size_t>> reported;
+    for(const Envelope_cell<FT>& cell : result_.cells)
+      for(std::size_t t = 0; t < cell.edge_label.size(); ++t)
+        if(!is_triangle_edge_label(cell.edge_label[t]) && cell.copy < cell.edge_label[t])
+          add_segment(cell, t, true, reported);
+    if constexpr(!is_exact<FT>()) {
+      for(const Envelope_cell<FT>& cell : result_.cells)
+        for(std::size_t t = 0; t < cell.edge_label.size(); ++t) {
+          const std::size_t j = cell.edge_label[t];
+          if(!is_triangle_edge_label(j) && j < cell.copy && !reported.count(std::make_pair(j, cell.copy)))
+            add_segment(cell, t, false, reported);
+        }
+    }
+    std::stable_sort(result_.segments.begin(), result_.segments.end(),
+                     [](const Envelope_segment<FT>& a, const Envelope_segment<FT>& b) {
+                       return a.copy_a < b.copy_a || (a.copy_a == b.copy_a && a.copy_b < b.copy_b);
+                     });
+  }
+
+  const std::vector<std::array<double, 3>>& d_; // the input: corner distances of every copy
+  const std::size_t m_;                         // number of copies
+  std::vector<std::size_t> alive_;              // undominated copies, in clipping order
+  std::size_t n_alive_ = 0;
+  std::vector<std::size_t> slot_;               // copy -> its index in alive_ (m_ if dominated)
+  std::vector<std::array<R, 3>> E_;             // e(alive_[a], alive_[b]) at a * n_alive_ + b
+  Lower_envelope<FT> result_;
+};
+
+template <class FT, class R = typename Ring_type<FT>::type>
+Lower_envelope<FT> compute(const std::vector<std::array<double, 3>>& d)
+{
+  return Envelope_builder<FT, R>(d).run();
 }
 
 } // namespace lower_envelope

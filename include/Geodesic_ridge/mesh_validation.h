@@ -102,6 +102,338 @@ Epick_point_3 to_epick(const Point_3& p)
   throw Invalid_mesh_error(message.str());
 }
 
+// The rules of `validate_triangle_soup()`, one member function each, run in
+// the documented order by `run()`: the first failing rule throws.
+template <class Point_3, class Polygon>
+class Triangle_soup_validator
+{
+public:
+  Triangle_soup_validator(const std::vector<Point_3>& points, const std::vector<Polygon>& polygons)
+    : points_(points), polygons_(polygons), nv_(points.size()), nf_(polygons.size())
+  {}
+
+  void run()
+  {
+    check_not_empty();                  // 1
+    check_triangles();                  // 2
+    copy_faces_checking_indices();      // 3
+    check_no_repeated_vertex();         // 4
+    check_finite_coordinates();         // 5
+    check_no_isolated_vertex();         // 6
+    check_no_duplicate_faces();         // 7
+    check_edges();                      // 8-10
+    check_manifold_vertices();          // 11
+    check_connected();                  // 12
+    check_no_degenerate_face();         // 13
+  }
+
+private:
+  // The first offending halfedge of each edge rule (invalid_index: none) and
+  // what its message needs.
+  struct Edge_problems
+  {
+    std::size_t non_manifold = invalid_index, non_manifold_count = 0;
+    std::size_t boundary = invalid_index, boundary_count = 0;
+    std::size_t misoriented = invalid_index, misoriented_other = 0;
+  };
+
+  // Halfedge h runs from corner h % 3 of face h / 3 to the next corner.
+  std::size_t source(std::size_t h) const { return tri_[h]; }
+  std::size_t target(std::size_t h) const { return tri_[h % 3 == 2 ? h - 2 : h + 1]; }
+  std::size_t low(std::size_t h) const { return (std::min)(source(h), target(h)); }
+  std::size_t high(std::size_t h) const { return (std::max)(source(h), target(h)); }
+
+  void check_not_empty() const
+  {
+    if(nv_ == 0 || nf_ == 0)
+    {
+      std::ostringstream msg;
+      msg << "mesh is empty (" << nv_ << " vertices, " << nf_ << " faces)";
+      fail(msg);
+    }
+  }
+
+  void check_triangles() const
+  {
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      const std::size_t n = static_cast<std::size_t>(polygons_[f].size());
+      if(n != 3)
+      {
+        std::ostringstream msg;
+        msg << "face " << f << " has " << n << (n == 1 ? " vertex" : " vertices")
+            << "; only triangle meshes are supported";
+        fail(msg);
+      }
+    }
+  }
+
+  // From here on, faces are read from `tri_`, as size_t triples.
+  void copy_faces_checking_indices()
+  {
+    tri_.resize(3 * nf_);
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        const auto raw = polygons_[f][k];
+        const std::size_t v = to_index(raw);
+        if(v >= nv_)
+        {
+          std::ostringstream msg;
+          msg << "face " << f << " refers to vertex " << index_to_string(raw)
+              << ", out of range (the mesh has " << nv_ << " vertices, numbered from 0)";
+          fail(msg);
+        }
+        tri_[3 * f + k] = v;
+      }
+    }
+  }
+
+  void check_no_repeated_vertex() const
+  {
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      const std::size_t a = tri_[3 * f], b = tri_[3 * f + 1], c = tri_[3 * f + 2];
+      if(a == b || a == c || b == c)
+      {
+        std::ostringstream msg;
+        msg << "face " << f << " repeats vertex " << (a == b || a == c ? a : b)
+            << " (vertices " << a << ", " << b << ", " << c << ")";
+        fail(msg);
+      }
+    }
+  }
+
+  void check_finite_coordinates() const
+  {
+    for(std::size_t v = 0; v < nv_; ++v)
+    {
+      if(!has_finite_coordinates(points_[v]))
+      {
+        std::ostringstream msg;
+        msg << "vertex " << v << " has a non-finite coordinate (" << CGAL::to_double(points_[v].x()) << " "
+            << CGAL::to_double(points_[v].y()) << " " << CGAL::to_double(points_[v].z()) << ")";
+        fail(msg);
+      }
+    }
+  }
+
+  void check_no_isolated_vertex() const
+  {
+    std::vector<bool> used(nv_, false);
+    for(std::size_t v : tri_)
+      used[v] = true;
+    const auto it = std::find(used.begin(), used.end(), false);
+    if(it != used.end())
+    {
+      std::ostringstream msg;
+      msg << "vertex " << (it - used.begin()) << " is isolated (used by no face)";
+      fail(msg);
+    }
+  }
+
+  // Bucket the sorted triples by their smallest vertex, sort each bucket by
+  // the two others (stable, so equal triples stay in face order), and compare
+  // neighbours. Report the pair whose later face comes first in the file.
+  void check_no_duplicate_faces() const
+  {
+    std::vector<std::size_t> sorted(tri_);
+    for(std::size_t f = 0; f < nf_; ++f)
+      std::sort(sorted.begin() + 3 * f, sorted.begin() + 3 * f + 3);
+    std::vector<std::size_t> begin;
+    std::vector<std::size_t> order = bucket_sort(nf_, nv_, [&](std::size_t f) { return sorted[3 * f]; }, begin);
+    auto key = [&](std::size_t f) { return std::make_pair(sorted[3 * f + 1], sorted[3 * f + 2]); };
+    for(std::size_t v = 0; v < nv_; ++v)
+      std::stable_sort(order.begin() + begin[v], order.begin() + begin[v + 1],
+                       [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+    std::size_t first = invalid_index, other = invalid_index;
+    for(std::size_t i = 1; i < nf_; ++i)
+    {
+      const std::size_t f = order[i], g = order[i - 1];
+      if(sorted[3 * f] == sorted[3 * g] && key(f) == key(g) && f < first)
+      {
+        first = f;
+        other = g; // an earlier face on the same vertices (stable order)
+      }
+    }
+    if(first != invalid_index)
+    {
+      std::ostringstream msg;
+      msg << "faces " << other << " and " << first << " are duplicates (both on vertices "
+          << sorted[3 * first] << ", " << sorted[3 * first + 1] << ", " << sorted[3 * first + 2] << ")";
+      fail(msg);
+    }
+  }
+
+  // The 3F halfedges bucketed by their lower vertex, each bucket sorted by the
+  // higher one (stable): the halfedges of an edge are adjacent, in face order.
+  std::vector<std::size_t> halfedges_by_edge() const
+  {
+    std::vector<std::size_t> begin;
+    std::vector<std::size_t> order = bucket_sort(3 * nf_, nv_, [this](std::size_t h) { return low(h); }, begin);
+    for(std::size_t v = 0; v < nv_; ++v)
+      std::stable_sort(order.begin() + begin[v], order.begin() + begin[v + 1],
+                       [this](std::size_t a, std::size_t b) { return high(a) < high(b); });
+    return order;
+  }
+
+  // One pass over the groups of equal edges; "first" is the offending edge
+  // that appears in the earliest face.
+  Edge_problems find_edge_problems() const
+  {
+    const std::vector<std::size_t> order = halfedges_by_edge();
+    const std::size_t nh = order.size();
+    Edge_problems p;
+    for(std::size_t i = 0; i < nh;)
+    {
+      std::size_t j = i + 1;
+      while(j < nh && low(order[j]) == low(order[i]) && high(order[j]) == high(order[i]))
+        ++j;
+      const std::size_t h = order[i]; // the halfedge of the earliest face (stable)
+      if(j - i >= 3)
+      {
+        if(h < p.non_manifold)
+        {
+          p.non_manifold = h;
+          p.non_manifold_count = j - i;
+        }
+      }
+      else if(j - i == 1)
+      {
+        ++p.boundary_count;
+        p.boundary = (std::min)(p.boundary, h);
+      }
+      else if(source(order[i]) == source(order[i + 1]) && h < p.misoriented)
+      {
+        p.misoriented = h;
+        p.misoriented_other = order[i + 1];
+      }
+      i = j;
+    }
+    return p;
+  }
+
+  // 8-10, each over the whole mesh before the next.
+  void check_edges() const
+  {
+    const Edge_problems p = find_edge_problems();
+    std::ostringstream msg;
+    if(p.non_manifold != invalid_index)
+    {
+      const std::size_t h = p.non_manifold;
+      msg << "edge " << low(h) << "-" << high(h) << " is non-manifold: it is shared by " << p.non_manifold_count
+          << " faces (first: face " << h / 3 << "); only manifold meshes are supported";
+      fail(msg);
+    }
+    if(p.boundary_count > 0)
+    {
+      const std::size_t h = p.boundary;
+      msg << "mesh has " << p.boundary_count << " boundary edge" << (p.boundary_count == 1 ? "" : "s")
+          << " (first: vertices " << source(h) << "-" << target(h) << " of face " << h / 3
+          << "); only closed meshes are supported";
+      fail(msg);
+    }
+    if(p.misoriented != invalid_index)
+    {
+      const std::size_t h = p.misoriented;
+      msg << "faces " << h / 3 << " and " << p.misoriented_other / 3
+          << " are inconsistently oriented (both traverse edge " << source(h) << "->" << target(h)
+          << " in the same direction)";
+      fail(msg);
+    }
+  }
+
+  // The number of cycles of the link of v, whose corners are [first, last).
+  // Each corner (v; a, b) of a face gives the link edge a -> b; the mesh being
+  // closed, oriented and edge-manifold, `next` is then a permutation of the
+  // link vertices. `visited` stamps a link vertex with v.
+  template <class Iterator>
+  std::size_t count_link_cycles(std::size_t v, Iterator first, Iterator last, std::vector<std::size_t>& next,
+                                std::vector<std::size_t>& visited) const
+  {
+    for(Iterator it = first; it != last; ++it)
+    {
+      const std::size_t c = *it, f = c / 3, k = c % 3;
+      next[tri_[3 * f + (k + 1) % 3]] = tri_[3 * f + (k + 2) % 3];
+    }
+    std::size_t cycles = 0;
+    for(Iterator it = first; it != last; ++it)
+    {
+      const std::size_t c = *it;
+      std::size_t x = tri_[3 * (c / 3) + (c % 3 + 1) % 3];
+      if(visited[x] == v)
+        continue;
+      ++cycles;
+      while(x != invalid_index && visited[x] != v)
+      {
+        visited[x] = v;
+        x = next[x];
+      }
+    }
+    return cycles;
+  }
+
+  // A vertex is manifold iff its link is one cycle.
+  void check_manifold_vertices() const
+  {
+    std::vector<std::size_t> begin;
+    const std::vector<std::size_t> corners =
+      bucket_sort(3 * nf_, nv_, [this](std::size_t c) { return tri_[c]; }, begin);
+    std::vector<std::size_t> next(nv_, invalid_index);
+    std::vector<std::size_t> visited(nv_, invalid_index);
+    for(std::size_t v = 0; v < nv_; ++v)
+    {
+      const std::size_t cycles =
+        count_link_cycles(v, corners.begin() + begin[v], corners.begin() + begin[v + 1], next, visited);
+      if(cycles > 1)
+      {
+        std::ostringstream msg;
+        msg << "vertex " << v << " is non-manifold (its faces form " << cycles
+            << " separate fans); only manifold meshes are supported";
+        fail(msg);
+      }
+    }
+  }
+
+  void check_connected() const
+  {
+    Union_find uf(nv_);
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      uf.unite(tri_[3 * f], tri_[3 * f + 1]);
+      uf.unite(tri_[3 * f], tri_[3 * f + 2]);
+    }
+    const std::size_t components = uf.number_of_sets();
+    if(components > 1)
+    {
+      std::ostringstream msg;
+      msg << "mesh has " << components << " connected components; only one is supported";
+      fail(msg);
+    }
+  }
+
+  // With an exact predicate, no epsilon.
+  void check_no_degenerate_face() const
+  {
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      if(CGAL::collinear(to_epick(points_[tri_[3 * f]]), to_epick(points_[tri_[3 * f + 1]]),
+                         to_epick(points_[tri_[3 * f + 2]])))
+      {
+        std::ostringstream msg;
+        msg << "face " << f << " is degenerate (its corners are collinear)";
+        fail(msg);
+      }
+    }
+  }
+
+  const std::vector<Point_3>& points_;
+  const std::vector<Polygon>& polygons_;
+  const std::size_t nv_, nf_;
+  std::vector<std::size_t> tri_; // face f is tri_[3f], tri_[3f + 1], tri_[3f + 2]
+};
+
 } // namespace validation
 } // namespace internal
 
@@ -155,247 +487,7 @@ Epick_point_3 to_epick(const Point_3& p)
 template <class Point_3, class Polygon>
 void validate_triangle_soup(const std::vector<Point_3>& points, const std::vector<Polygon>& polygons)
 {
-  namespace iv = internal::validation;
-  using iv::fail;
-  const std::size_t nv = points.size();
-  const std::size_t nf = polygons.size();
-  std::ostringstream msg;
-
-  // 1. Empty.
-  if(nv == 0 || nf == 0)
-  {
-    msg << "mesh is empty (" << nv << " vertices, " << nf << " faces)";
-    fail(msg);
-  }
-
-  // 2. Triangles only.
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    const std::size_t n = static_cast<std::size_t>(polygons[f].size());
-    if(n != 3)
-    {
-      msg << "face " << f << " has " << n << (n == 1 ? " vertex" : " vertices")
-          << "; only triangle meshes are supported";
-      fail(msg);
-    }
-  }
-
-  // 3. Indices in range. From here on, faces are copied as size_t triples.
-  std::vector<std::size_t> tri(3 * nf);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    for(std::size_t k = 0; k < 3; ++k)
-    {
-      const auto raw = polygons[f][k];
-      const std::size_t v = iv::to_index(raw);
-      if(v >= nv)
-      {
-        msg << "face " << f << " refers to vertex " << iv::index_to_string(raw)
-            << ", out of range (the mesh has " << nv << " vertices, numbered from 0)";
-        fail(msg);
-      }
-      tri[3 * f + k] = v;
-    }
-  }
-
-  // 4. No repeated vertex in a face.
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    const std::size_t a = tri[3 * f], b = tri[3 * f + 1], c = tri[3 * f + 2];
-    if(a == b || a == c || b == c)
-    {
-      msg << "face " << f << " repeats vertex " << (a == b || a == c ? a : b)
-          << " (vertices " << a << ", " << b << ", " << c << ")";
-      fail(msg);
-    }
-  }
-
-  // 5. Finite coordinates.
-  for(std::size_t v = 0; v < nv; ++v)
-  {
-    if(!iv::has_finite_coordinates(points[v]))
-    {
-      msg << "vertex " << v << " has a non-finite coordinate (" << CGAL::to_double(points[v].x()) << " "
-          << CGAL::to_double(points[v].y()) << " " << CGAL::to_double(points[v].z()) << ")";
-      fail(msg);
-    }
-  }
-
-  // 6. No isolated vertex.
-  {
-    std::vector<bool> used(nv, false);
-    for(std::size_t v : tri)
-      used[v] = true;
-    const auto it = std::find(used.begin(), used.end(), false);
-    if(it != used.end())
-    {
-      msg << "vertex " << (it - used.begin()) << " is isolated (used by no face)";
-      fail(msg);
-    }
-  }
-
-  // 7. Duplicate faces: bucket the sorted triples by their smallest vertex, sort
-  // each bucket by the two others (stable, so equal triples stay in face
-  // order), and compare neighbours. Report the pair whose later face comes
-  // first in the file.
-  {
-    std::vector<std::size_t> sorted(tri);
-    for(std::size_t f = 0; f < nf; ++f)
-      std::sort(sorted.begin() + 3 * f, sorted.begin() + 3 * f + 3);
-    std::vector<std::size_t> begin;
-    std::vector<std::size_t> order =
-      iv::bucket_sort(nf, nv, [&](std::size_t f) { return sorted[3 * f]; }, begin);
-    auto key = [&](std::size_t f) { return std::make_pair(sorted[3 * f + 1], sorted[3 * f + 2]); };
-    for(std::size_t v = 0; v < nv; ++v)
-      std::stable_sort(order.begin() + begin[v], order.begin() + begin[v + 1],
-                       [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
-    std::size_t first = iv::invalid_index, other = iv::invalid_index;
-    for(std::size_t i = 1; i < nf; ++i)
-    {
-      const std::size_t f = order[i], g = order[i - 1];
-      if(sorted[3 * f] == sorted[3 * g] && key(f) == key(g) && f < first)
-      {
-        first = f;
-        other = g; // an earlier face on the same vertices (stable order)
-      }
-    }
-    if(first != iv::invalid_index)
-    {
-      msg << "faces " << other << " and " << first << " are duplicates (both on vertices "
-          << sorted[3 * first] << ", " << sorted[3 * first + 1] << ", " << sorted[3 * first + 2] << ")";
-      fail(msg);
-    }
-  }
-
-  // 8-10. Edges: bucket the 3F halfedges by their smaller vertex, sort each
-  // bucket by the larger one, and look at each group of equal edges. The three
-  // rules are checked in order over the whole mesh; "first" is the offending
-  // edge that appears in the earliest face.
-  {
-    const std::size_t nh = 3 * nf;
-    auto src = [&](std::size_t h) { return tri[h]; };
-    auto tgt = [&](std::size_t h) { return tri[h % 3 == 2 ? h - 2 : h + 1]; };
-    auto lo = [&](std::size_t h) { return (std::min)(src(h), tgt(h)); };
-    auto hi = [&](std::size_t h) { return (std::max)(src(h), tgt(h)); };
-    std::vector<std::size_t> begin;
-    std::vector<std::size_t> order = iv::bucket_sort(nh, nv, lo, begin);
-    for(std::size_t v = 0; v < nv; ++v)
-      std::stable_sort(order.begin() + begin[v], order.begin() + begin[v + 1],
-                       [&](std::size_t a, std::size_t b) { return hi(a) < hi(b); });
-
-    std::size_t nm_h = iv::invalid_index, nm_count = 0; // non-manifold edge
-    std::size_t bd_h = iv::invalid_index, bd_count = 0; // boundary edge
-    std::size_t or_h = iv::invalid_index, or_other = 0; // orientation
-    for(std::size_t i = 0; i < nh;)
-    {
-      std::size_t j = i + 1;
-      while(j < nh && lo(order[j]) == lo(order[i]) && hi(order[j]) == hi(order[i]))
-        ++j;
-      const std::size_t h = order[i]; // the halfedge of the earliest face (stable)
-      if(j - i >= 3)
-      {
-        if(h < nm_h)
-        {
-          nm_h = h;
-          nm_count = j - i;
-        }
-      }
-      else if(j - i == 1)
-      {
-        ++bd_count;
-        bd_h = (std::min)(bd_h, h);
-      }
-      else if(src(order[i]) == src(order[i + 1]) && h < or_h)
-      {
-        or_h = h;
-        or_other = order[i + 1];
-      }
-      i = j;
-    }
-    if(nm_h != iv::invalid_index)
-    {
-      msg << "edge " << lo(nm_h) << "-" << hi(nm_h) << " is non-manifold: it is shared by " << nm_count
-          << " faces (first: face " << nm_h / 3 << "); only manifold meshes are supported";
-      fail(msg);
-    }
-    if(bd_count > 0)
-    {
-      msg << "mesh has " << bd_count << " boundary edge" << (bd_count == 1 ? "" : "s") << " (first: vertices "
-          << src(bd_h) << "-" << tgt(bd_h) << " of face " << bd_h / 3 << "); only closed meshes are supported";
-      fail(msg);
-    }
-    if(or_h != iv::invalid_index)
-    {
-      msg << "faces " << or_h / 3 << " and " << or_other / 3 << " are inconsistently oriented (both traverse edge "
-          << src(or_h) << "->" << tgt(or_h) << " in the same direction)";
-      fail(msg);
-    }
-  }
-
-  // 11. Manifold vertices. Each corner (v; a, b) of a face gives the link edge
-  // a -> b of v. The mesh being closed, oriented and edge-manifold, `next` is a
-  // permutation of the link vertices of v; v is manifold iff it is one cycle.
-  {
-    std::vector<std::size_t> begin;
-    const std::vector<std::size_t> corners = iv::bucket_sort(3 * nf, nv, [&](std::size_t c) { return tri[c]; }, begin);
-    std::vector<std::size_t> next(nv, iv::invalid_index);
-    std::vector<std::size_t> visited(nv, iv::invalid_index); // stamp = the vertex being checked
-    for(std::size_t v = 0; v < nv; ++v)
-    {
-      for(std::size_t i = begin[v]; i < begin[v + 1]; ++i)
-      {
-        const std::size_t c = corners[i], f = c / 3, k = c % 3;
-        next[tri[3 * f + (k + 1) % 3]] = tri[3 * f + (k + 2) % 3];
-      }
-      std::size_t cycles = 0;
-      for(std::size_t i = begin[v]; i < begin[v + 1]; ++i)
-      {
-        const std::size_t c = corners[i];
-        std::size_t x = tri[3 * (c / 3) + (c % 3 + 1) % 3];
-        if(visited[x] == v)
-          continue;
-        ++cycles;
-        while(x != iv::invalid_index && visited[x] != v)
-        {
-          visited[x] = v;
-          x = next[x];
-        }
-      }
-      if(cycles > 1)
-      {
-        msg << "vertex " << v << " is non-manifold (its faces form " << cycles
-            << " separate fans); only manifold meshes are supported";
-        fail(msg);
-      }
-    }
-  }
-
-  // 12. One connected component.
-  {
-    internal::Union_find uf(nv);
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      uf.unite(tri[3 * f], tri[3 * f + 1]);
-      uf.unite(tri[3 * f], tri[3 * f + 2]);
-    }
-    const std::size_t components = uf.number_of_sets();
-    if(components > 1)
-    {
-      msg << "mesh has " << components << " connected components; only one is supported";
-      fail(msg);
-    }
-  }
-
-  // 13. Degenerate faces, with an exact predicate.
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    if(CGAL::collinear(iv::to_epick(points[tri[3 * f]]), iv::to_epick(points[tri[3 * f + 1]]),
-                       iv::to_epick(points[tri[3 * f + 2]])))
-    {
-      msg << "face " << f << " is degenerate (its corners are collinear)";
-      fail(msg);
-    }
-  }
+  internal::validation::Triangle_soup_validator<Point_3, Polygon>(points, polygons).run();
 }
 
 /// \ingroup PkgGeodesicRidgeRef

@@ -108,6 +108,98 @@ public:
   }
 };
 
+// The steps of `diagnose_OFF()`, in file order: header, vertices, faces.
+class OFF_diagnosis
+{
+public:
+  explicit OFF_diagnosis(const std::string& filename) : filename_(filename), lines_(filename) {}
+
+  // The keyword and the counts; false for an OFF variant.
+  bool read_header()
+  {
+    if(!lines_.next(tokens_))
+      file_error(filename_, "file is empty (no OFF header)");
+    if(tokens_[0] != "OFF")
+    {
+      const std::string& t = tokens_[0];
+      if(t.size() > 3 && t.compare(t.size() - 3, 3, "OFF") == 0)
+        return false;
+      file_error(filename_, where() + "expected the OFF header, found '" + t + "'");
+    }
+    if(tokens_.size() > 1)
+      tokens_.erase(tokens_.begin()); // "OFF V F E" on one line
+    else if(!lines_.next(tokens_))
+      file_error(filename_, "file ends after the OFF keyword (no 'V F E' counts)");
+    if(tokens_[0] == "BINARY")
+      return false;
+    long long counts[3];
+    if(tokens_.size() != 3 || !parse_integer(tokens_[0], counts[0]) || !parse_integer(tokens_[1], counts[1]) ||
+       !parse_integer(tokens_[2], counts[2]) || counts[0] < 0 || counts[1] < 0)
+      file_error(filename_, where() + "expected the OFF counts 'V F E' (three integers)");
+    nv_ = static_cast<std::size_t>(counts[0]);
+    nf_ = static_cast<std::size_t>(counts[1]);
+    return true;
+  }
+
+  template <class Point>
+  void read_vertices(std::vector<Point>& points)
+  {
+    points.clear();
+    for(std::size_t i = 0; i < nv_; ++i)
+    {
+      if(!lines_.next(tokens_))
+        truncated(std::to_string(i) + " vertices");
+      if(tokens_.size() < 3)
+        file_error(filename_, where() + "vertex " + std::to_string(i) + " has " + std::to_string(tokens_.size()) +
+                                " coordinate(s), expected 3");
+      double c[3];
+      for(int k = 0; k < 3; ++k)
+        if(!parse_double(tokens_[k], c[k]))
+          file_error(filename_, where() + "vertex " + std::to_string(i) + ": '" + tokens_[k] + "' is not a number");
+      points.emplace_back(c[0], c[1], c[2]);
+    }
+  }
+
+  void read_faces(std::vector<std::vector<std::size_t>>& polygons)
+  {
+    polygons.clear();
+    for(std::size_t j = 0; j < nf_; ++j)
+    {
+      if(!lines_.next(tokens_))
+        truncated(std::to_string(j) + " faces");
+      long long n = 0;
+      if(!parse_integer(tokens_[0], n) || n < 0)
+        file_error(filename_, where() + "face " + std::to_string(j) + ": '" + tokens_[0] + "' is not a vertex count");
+      if(tokens_.size() < static_cast<std::size_t>(n) + 1)
+        file_error(filename_, where() + "face " + std::to_string(j) + " announces " + std::to_string(n) +
+                                " vertices but lists " + std::to_string(tokens_.size() - 1));
+      polygons.emplace_back();
+      for(std::size_t k = 1; k <= static_cast<std::size_t>(n); ++k)
+      {
+        long long id = 0;
+        if(!parse_integer(tokens_[k], id) || id < 0)
+          file_error(filename_, where() + "face " + std::to_string(j) + ": '" + tokens_[k] +
+                                  "' is not a vertex index");
+        polygons.back().push_back(static_cast<std::size_t>(id));
+      }
+    }
+  }
+
+private:
+  std::string where() const { return "line " + std::to_string(lines_.line_number()) + ": "; }
+
+  [[noreturn]] void truncated(const std::string& what) const
+  {
+    file_error(filename_, "file is truncated: the header announces " + std::to_string(nv_) + " vertices and " +
+                            std::to_string(nf_) + " faces, but it ends after " + what);
+  }
+
+  const std::string& filename_;
+  Token_lines lines_;
+  std::vector<std::string> tokens_;
+  std::size_t nv_ = 0, nf_ = 0; // the counts of the header
+};
+
 // Re-reads an ASCII OFF file that CGAL's reader rejected, to say why. Throws
 // `Mesh_file_error` naming the line for a syntax error or a truncation;
 // otherwise fills the soup, whose validation then names the semantic problem
@@ -117,71 +209,11 @@ template <class Point>
 bool diagnose_OFF(const std::string& filename, std::vector<Point>& points,
                   std::vector<std::vector<std::size_t>>& polygons)
 {
-  Token_lines lines(filename);
-  std::vector<std::string> tokens;
-  auto where = [&] { return "line " + std::to_string(lines.line_number()) + ": "; };
-
-  if(!lines.next(tokens))
-    file_error(filename, "file is empty (no OFF header)");
-  if(tokens[0] != "OFF")
-  {
-    const std::string& t = tokens[0];
-    if(t.size() > 3 && t.compare(t.size() - 3, 3, "OFF") == 0)
-      return false;
-    file_error(filename, where() + "expected the OFF header, found '" + t + "'");
-  }
-  if(tokens.size() > 1)
-    tokens.erase(tokens.begin()); // "OFF V F E" on one line
-  else if(!lines.next(tokens))
-    file_error(filename, "file ends after the OFF keyword (no 'V F E' counts)");
-  if(tokens[0] == "BINARY")
+  OFF_diagnosis off(filename);
+  if(!off.read_header())
     return false;
-  long long counts[3];
-  if(tokens.size() != 3 || !parse_integer(tokens[0], counts[0]) || !parse_integer(tokens[1], counts[1]) ||
-     !parse_integer(tokens[2], counts[2]) || counts[0] < 0 || counts[1] < 0)
-    file_error(filename, where() + "expected the OFF counts 'V F E' (three integers)");
-  const std::size_t nv = static_cast<std::size_t>(counts[0]);
-  const std::size_t nf = static_cast<std::size_t>(counts[1]);
-  auto truncated = [&](const std::string& what) {
-    file_error(filename, "file is truncated: the header announces " + std::to_string(nv) + " vertices and " +
-                           std::to_string(nf) + " faces, but it ends after " + what);
-  };
-
-  points.clear();
-  for(std::size_t i = 0; i < nv; ++i)
-  {
-    if(!lines.next(tokens))
-      truncated(std::to_string(i) + " vertices");
-    if(tokens.size() < 3)
-      file_error(filename, where() + "vertex " + std::to_string(i) + " has " + std::to_string(tokens.size()) +
-                             " coordinate(s), expected 3");
-    double c[3];
-    for(int k = 0; k < 3; ++k)
-      if(!parse_double(tokens[k], c[k]))
-        file_error(filename, where() + "vertex " + std::to_string(i) + ": '" + tokens[k] + "' is not a number");
-    points.emplace_back(c[0], c[1], c[2]);
-  }
-
-  polygons.clear();
-  for(std::size_t j = 0; j < nf; ++j)
-  {
-    if(!lines.next(tokens))
-      truncated(std::to_string(j) + " faces");
-    long long n = 0;
-    if(!parse_integer(tokens[0], n) || n < 0)
-      file_error(filename, where() + "face " + std::to_string(j) + ": '" + tokens[0] + "' is not a vertex count");
-    if(tokens.size() < static_cast<std::size_t>(n) + 1)
-      file_error(filename, where() + "face " + std::to_string(j) + " announces " + std::to_string(n) +
-                             " vertices but lists " + std::to_string(tokens.size() - 1));
-    polygons.emplace_back();
-    for(std::size_t k = 1; k <= static_cast<std::size_t>(n); ++k)
-    {
-      long long id = 0;
-      if(!parse_integer(tokens[k], id) || id < 0)
-        file_error(filename, where() + "face " + std::to_string(j) + ": '" + tokens[k] + "' is not a vertex index");
-      polygons.back().push_back(static_cast<std::size_t>(id));
-    }
-  }
+  off.read_vertices(points);
+  off.read_faces(polygons);
   return true;
 }
 
@@ -245,6 +277,43 @@ void parse_OBJ_strictly(const std::string& filename, std::vector<Point>& points,
   }
 }
 
+// Fails early, with the reason, on a directory or a file that cannot be opened.
+inline void check_file_can_be_opened(const std::string& filename)
+{
+  std::error_code ec;
+  if(std::filesystem::is_directory(filename, ec))
+    file_error(filename, "is a directory, not a mesh file");
+  errno = 0;
+  std::ifstream probe(filename);
+  if(!probe)
+    file_error(filename, std::string("cannot open the file (") +
+                           (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
+}
+
+// Throws for a file CGAL's reader rejected: the validation's error if our own
+// parse of the file (`have_soup`) breaks a rule, else a generic syntax error.
+template <class Point>
+[[noreturn]] void report_rejected_file(const std::string& filename, Mesh_file_format format, bool have_soup,
+                                       const std::vector<Point>& points,
+                                       const std::vector<std::vector<std::size_t>>& polygons)
+{
+  if(have_soup)
+  {
+    try
+    {
+      validate_triangle_soup(points, polygons);
+    }
+    catch(const Invalid_mesh_error& e)
+    {
+      throw Invalid_mesh_error(filename + ": " + e.what());
+    }
+  }
+  const char* name = format == Mesh_file_format::OFF ? "OFF" : format == Mesh_file_format::OBJ ? "OBJ" : "PLY";
+  file_error(filename, std::string("malformed or truncated ") + name +
+                         " content (CGAL's reader rejected it: a value that is not a number, a missing"
+                         " value, or fewer elements than the header announces)");
+}
+
 // Reads the soup with CGAL's reader and throws `Mesh_file_error` (or, for a
 // file CGAL rejected because of an out-of-range index or a NaN, the
 // validation's `Invalid_mesh_error`) when it cannot be read entirely.
@@ -253,16 +322,7 @@ void read_polygon_soup_or_throw(const std::string& filename, std::vector<Point>&
                                 std::vector<std::vector<std::size_t>>& polygons)
 {
   const Mesh_file_format format = mesh_file_format(filename);
-  {
-    std::error_code ec;
-    if(std::filesystem::is_directory(filename, ec))
-      file_error(filename, "is a directory, not a mesh file");
-    errno = 0;
-    std::ifstream probe(filename);
-    if(!probe)
-      file_error(filename, std::string("cannot open the file (") +
-                             (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
-  }
+  check_file_can_be_opened(filename);
 
   std::vector<Point> strict_points;
   std::vector<std::vector<std::size_t>> strict_polygons;
@@ -297,21 +357,7 @@ void read_polygon_soup_or_throw(const std::string& filename, std::vector<Point>&
     if(magic.compare(0, 3, "ply") != 0)
       file_error(filename, "does not start with 'ply': not a PLY file");
   }
-  if(have_soup)
-  {
-    try
-    {
-      validate_triangle_soup(points, polygons);
-    }
-    catch(const Invalid_mesh_error& e)
-    {
-      throw Invalid_mesh_error(filename + ": " + e.what());
-    }
-  }
-  const char* name = format == Mesh_file_format::OFF ? "OFF" : format == Mesh_file_format::OBJ ? "OBJ" : "PLY";
-  file_error(filename, std::string("malformed or truncated ") + name +
-                         " content (CGAL's reader rejected it: a value that is not a number, a missing"
-                         " value, or fewer elements than the header announces)");
+  report_rejected_file(filename, format, have_soup, points, polygons);
 }
 
 } // namespace mesh_io
