@@ -468,20 +468,19 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
   if(!rc.cone_polylines.empty())
     j["cone_ridge"] = {{"tolerance", c.tolerance}, {"points_moved", c.points_moved},
                        {"junctions_moved", c.junctions_moved}, {"points_kept", c.points_kept},
-                       {"points_added", c.points_added}, {"largest_move_mean_edges", c.largest_move},
-                       {"time", c.time}};
+                       {"points_added", c.points_added}, {"largest_move_mean_edges", c.largest_move}};
   if(refined)
     j["refined_mesh"] = {{"vertices", refined->vertices}, {"faces", refined->faces},
                          {"split_faces", refined->split_faces}, {"centre_vertices", refined->centre_vertices},
                          {"ridge_edges", refined->ridge_edges},
                          {"unmatched_ridge_segments", refined->unmatched_ridge_segments},
                          {"largest_disagreement", refined->largest_disagreement}};
-  j["timings_seconds"] = {{"read_and_validate", read_seconds}, {"tree_distances", g.time_solve_on_mesh},
-                          {"shortest_path_tree", s.time_shortest_path_tree}, {"significance", s.time_significance},
-                          {"cut_graph", s.time_cut_graph}, {"disk_check", s.time_disk_check},
-                          {"rough_cut_locus_total", s.time_total}, {"extended_surface", g.time_extension},
-                          {"solve", g.time_solve}, {"envelope_and_dominance", g.time_envelope},
-                          {"ridge_assembly", g.time_assembly}, {"total", g.time_total}};
+  // every step the pipeline timed, stage 1's split into its own steps
+  Json timings = {{"read_and_validate", read_seconds}};
+  for(const auto& [step, seconds] : rc.timings.steps()) timings[step] = seconds;
+  for(const auto& [step, seconds] : r.timings.steps()) timings["rough_cut_locus." + step] = seconds;
+  timings["total"] = read_seconds + rc.timings.total();
+  j["timings_seconds"] = timings;
   std::ofstream os(filename);
   if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
   // a file name that is not UTF-8 gets U+FFFD rather than an exception
@@ -532,7 +531,7 @@ void print_summary(const Options& o, const Ridge& ridge)
             << g.extended_surface.rings << " rings, " << g.solves << " " << g.solver << " solves\n"
             << "ridge: " << ridge.polylines.size() << " polylines, " << g.ridge.junctions << " junctions, "
             << g.ridge.free_ends << " free ends, " << g.ridge.cycles << " cycles, length "
-            << g.ridge.total_length << "; " << g.time_total << " s\n";
+            << g.ridge.total_length << "; " << ridge.timings.total() << " s\n";
   if(o.field == Geodesic_ridge::Field::cone)
     std::cout << "cone ridge: " << g.cone_ridge.points_moved << " points and " << g.cone_ridge.junctions_moved
               << " junctions moved onto the cones' curves, " << g.cone_ridge.points_kept << " kept, "
