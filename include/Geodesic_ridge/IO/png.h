@@ -33,9 +33,9 @@ namespace IO {
 template <class Point_3>
 struct Png_curves
 {
-  std::vector<std::vector<Point_3> > polylines;
-  std::array<unsigned char, 3> rgb = {{220, 30, 30}};
-  int width_pixels = 2;
+  std::vector<std::vector<Point_3> > polylines; ///< the polylines
+  std::array<unsigned char, 3> rgb = {{220, 30, 30}}; ///< their colour (red, green, blue)
+  int width_pixels = 2;                         ///< their width in pixels
 };
 
 namespace internal_png {
