@@ -381,7 +381,7 @@ public:
   void run(std::vector<std::vector<Ridge_point<Point> > >& polylines)
   {
     compute_envelopes();
-    fronts_.reset(new Union_find(cells_.size()));
+    for(std::size_t c = 0; c < cells_.size(); ++c) fronts_.add();
     segments_inside_faces();
     segments_along_edges();
     merge_into_one_region();
@@ -510,7 +510,7 @@ private:
       for(const auto& s : envelope_of_[f]->segments)
       {
         const std::size_t ca = cell_of(f, s.copy_a), cb = cell_of(f, s.copy_b);
-        if(same_field(cells_[ca].field, cells_[cb].field)) { fronts_->unite(ca, cb); continue; }
+        if(same_field(cells_[ca].field, cells_[cb].field)) { fronts_.unite(ca, cb); continue; }
         typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
         const auto ga = field_gradient(cp, cells_[ca].field), gb = field_gradient(cp, cells_[cb].field);
         const Vector va(ga[0], ga[1], ga[2]), vb(gb[0], gb[1], gb[2]);
@@ -570,7 +570,7 @@ private:
     if(!glued_across(c1, k1, c2) || cells_[c1].split || cells_[c2].split ||
        kinked(edge_jump(f1, k1, c1, f2, k2, c2)))
       return false;
-    fronts_->unite(c1, c2);
+    fronts_.unite(c1, c2);
     return true;
   }
 
@@ -622,7 +622,7 @@ private:
       const bool glued = glued_across(c1, k1, c2) && !kinked(jump) && !cells_[c1].split && !cells_[c2].split;
       if(glued || one_front_along(c1, k1, c2, k2, cuts[i], cuts[i + 1], jump))
       {
-        fronts_->unite(c1, c2);
+        fronts_.unite(c1, c2);
         continue;
       }
       // the two edge points, from f1's side
@@ -655,14 +655,14 @@ private:
   void merge_into_one_region()
   {
     std::set<std::size_t> roots;
-    for(std::size_t c = 0; c < cells_.size(); ++c) roots.insert(fronts_->find(c));
+    for(std::size_t c = 0; c < cells_.size(); ++c) roots.insert(fronts_.find(c));
     st_.regions_before_merge = roots.size();
     std::vector<std::size_t> order(segments_.size());
     for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return segments_[a].strength < segments_[b].strength; });
     for(std::size_t i : order)
-      if(fronts_->unite(segments_[i].left, segments_[i].right))
+      if(fronts_.unite(segments_[i].left, segments_[i].right))
       {
         segments_[i].ridge = false;
         ++st_.merged_segments;
@@ -862,7 +862,7 @@ private:
   std::map<Key, std::size_t> node_of_;
   std::vector<Ridge_point<Point> > nodes_;
   std::vector<Segment> segments_;
-  std::unique_ptr<Union_find> fronts_;
+  Union_find fronts_; // cells that are one front
 };
 
 template <class TriangleMesh, class Point, class VertexPointMap, class VertexIndexMap,

@@ -462,6 +462,7 @@ private:
   {
     threshold_ = r_.tolerance * r_.total_area;
     kept_.assign(nd_, 0);
+    extension_.assign(nd_, 0);
     for(std::size_t d = 0; d < nd_; ++d)
       if(significance(d) >= threshold_) { kept_[d] = 1; ++nkept_; }
     if(nkept_ == 0 && nd_ > 0)
@@ -529,7 +530,6 @@ private:
       }
     }
     for(std::size_t f = 0; f < nf_; ++f) st_.number_of_kept_dual_leaves += (kept_degree_[f] == 1);
-    extension_.assign(nd_, 0);
   }
 
   // Extensions of the kept structure into pruned branches. The ridge shows only
