@@ -399,7 +399,7 @@ void write_isolines(const std::string& filename, const Lines& lines)
 
 // (found by argument-dependent lookup: in the statistics' namespace)
 namespace Geodesic_ridge {
-GEODESIC_RIDGE_JSON_FIELDS(Rough_cut_locus_statistics, genus, number_of_vertices, number_of_edges, number_of_faces,
+GEODESIC_RIDGE_JSON_FIELDS(Rough_cut_locus_statistics, genus, number_of_boundary_loops, number_of_vertices, number_of_edges, number_of_faces,
                            number_of_dual_edges, number_of_core_dual_edges, number_of_kept_dual_edges,
                            number_of_kept_dual_leaves, number_of_extended_dual_leaves, number_of_leaf_extension_edges,
                            number_of_cut_edges, number_of_cut_vertices, number_of_cut_leaves, cut_cycle_rank,

@@ -430,12 +430,19 @@ TEST_CASE("rule 8: an edge shared by three faces is rejected", "[input][validati
   check_invalid_everywhere(s, "edge 0-1 is non-manifold: it is shared by 3 faces");
 }
 
-TEST_CASE("rule 9: a boundary edge is rejected", "[input][validation]")
+TEST_CASE("rule 9: a surface with a border is accepted, a bowtie at a border vertex is not", "[input][validation]")
 {
   Soup s = tetrahedron();
-  s.faces.pop_back(); // remove face 3 = (1, 2, 3)
-  check_invalid_everywhere(s, "mesh has 3 boundary edges (first: vertices 2-1 of face 0); only closed meshes are supported");
-  check_invalid_surface_mesh(s, "mesh has 3 boundary edges");
+  s.faces.pop_back(); // remove face 3 = (1, 2, 3): three border edges
+  CHECK_NOTHROW(Geodesic_ridge::validate_triangle_soup(s.cgal_points(), s.cgal_faces()));
+  Mesh tm;
+  REQUIRE(build_mesh(s, tm));
+  CHECK_NOTHROW(Geodesic_ridge::validate_triangle_mesh(tm));
+  // two triangles sharing only vertex 0: its faces form two fans (paths)
+  Soup bowtie;
+  bowtie.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}};
+  bowtie.faces = {{0, 1, 2}, {0, 3, 4}};
+  check_invalid_everywhere(bowtie, "vertex 0 is non-manifold (its faces form 2 separate fans)");
 }
 
 TEST_CASE("rule 10: an inconsistent orientation is rejected", "[input][validation]")
@@ -511,9 +518,10 @@ TEST_CASE("file errors: a failed read leaves the mesh untouched", "[input][file]
   Temp_dir dir;
   Mesh tm;
   REQUIRE(build_mesh(tetrahedron(), tm));
-  Soup open = tetrahedron();
-  open.faces.pop_back();
-  CHECK_THROWS_AS(Geodesic_ridge::IO::read_triangle_mesh(dir.write("open.off", to_off(open)), tm), Invalid_mesh_error);
+  Soup isolated = tetrahedron();
+  isolated.points.push_back({2, 2, 2}); // a vertex no face uses
+  CHECK_THROWS_AS(Geodesic_ridge::IO::read_triangle_mesh(dir.write("isolated.off", to_off(isolated)), tm),
+                  Invalid_mesh_error);
   CHECK_THROWS_AS(Geodesic_ridge::IO::read_triangle_mesh(dir.write("bad.off", "OFF\n4 4 0\n0 0\n"), tm), Mesh_file_error);
   CHECK(tm.number_of_faces() == 4);
 }
@@ -593,12 +601,12 @@ TEST_CASE("file errors: malformed OBJ, including what CGAL's reader silently acc
     CHECK_THAT(msg, Contains(c.needle));
     CHECK_THAT(msg, Contains("bad.obj"));
   }
-  SECTION("a truncated OBJ has no header to compare with: it is an open mesh")
+  SECTION("a truncated OBJ has no header to compare with: it is read as an open mesh")
   {
     const std::string path = dir.write("cut.obj", verts + "f 1 3 2\nf 1 2 4\n");
     Mesh tm;
-    CHECK_THAT(message_of<Invalid_mesh_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(path, tm); }),
-               Contains("boundary edges"));
+    CHECK_NOTHROW(Geodesic_ridge::IO::read_triangle_mesh(path, tm));
+    CHECK(tm.number_of_faces() == 2);
   }
   SECTION("texture and normal references are accepted")
   {

@@ -310,6 +310,7 @@ std::vector<char> copies_winning_on_border(const Faces_across& across, const Ext
     for(std::size_t i = 0; i < fc.copies.size(); ++i)
       if(fc.copies[i] != c) others.push_back({{fc.fields[i][k], fc.fields[i][(k + 1) % 3]}});
     const auto [g, kg] = across[f][k];
+    if(g == no_face_across) continue; // the border of M: nothing lies beyond
     for(const auto& o : face_copies[g].fields) others.push_back({{o[(kg + 1) % 3], o[kg]}});
     if(lowest_somewhere_on_edge(d[k], d[(k + 1) % 3], others, slack)) winning[c] = 1;
   }
@@ -788,10 +789,13 @@ private:
 
   void check_ridge_topology() const
   {
-    const std::size_t cycles = static_cast<std::size_t>(2 * result_.rough_cut_locus.statistics.genus);
+    // the ridge with the border: connected, with 2g + b independent cycles
+    const Rough_cut_locus_statistics& s = result_.rough_cut_locus.statistics;
+    const std::size_t cycles = static_cast<std::size_t>(2 * s.genus) + s.number_of_boundary_loops;
     if(st_.ridge.components != 1 || st_.ridge.cycles != cycles)
-      throw Algorithm_error("the ridge has " + std::to_string(st_.ridge.components) + " components and " +
-                            std::to_string(st_.ridge.cycles) + " cycles; expected 1 and 2g = " +
+      throw Algorithm_error("the ridge" + std::string(s.number_of_boundary_loops > 0 ? " with the border" : "") +
+                            " has " + std::to_string(st_.ridge.components) + " components and " +
+                            std::to_string(st_.ridge.cycles) + " cycles; expected 1 and 2g + b = " +
                             std::to_string(cycles));
   }
 

@@ -118,6 +118,7 @@ class Extended_surface_builder
     std::uint32_t size;       // number of face copies
     bool leaf;                // at a leaf of K, or left open (leave_open): winds past 2π, never closes
     bool closed;
+    bool border;              // of a vertex on the border of M: its star is a path, never closed
   };
 
 public:
@@ -142,7 +143,7 @@ public:
     for(std::uint32_t c = 0; c < copies_.size(); ++c)
       if(from == nullptr || (c < from->size() && (*from)[c]))
         for(int k = 0; k < 3; ++k)
-          if(copies_[c].nb[k] == none) boundary.emplace_back(c, k);
+          if(copies_[c].nb[k] == none && !on_border(copies_[c].face, k)) boundary.emplace_back(c, k);
     const std::size_t before = copies_.size();
     for(const auto& [c, k] : boundary)
       if(copies_[c].nb[k] == none) add_copy_across(c, k, r);
@@ -175,7 +176,8 @@ public:
 
 private:
   // Per face: its corners, the face and edge across each edge, whether that
-  // edge is cut; per vertex its degree.
+  // edge is cut; per vertex its degree (faces around it) and whether it is on
+  // the border.
   void index_faces(const Rough_cut_locus<TriangleMesh>& rcl, typename Maps::Edge_index_map eim)
   {
     const Faces_by_index<TriangleMesh, typename Maps::Vertex_point_map> faces(tm_, maps_.vpm, maps_.fim);
@@ -196,6 +198,10 @@ private:
         edge_cut_[f][k] = rcl.is_cut_edge[get(eim, edge(h[k], tm_))] != 0;
       }
     }
+    border_vertex_.assign(nv, 0);
+    for(std::uint32_t f = 0; f < nf; ++f)
+      for(int k = 0; k < 3; ++k)
+        if(on_border(f, k)) border_vertex_[corner_[f][k]] = border_vertex_[corner_[f][(k + 1) % 3]] = 1;
   }
 
   // The disk D: one copy per face, glued across every edge not in K.
@@ -211,7 +217,7 @@ private:
       for(int k = 0; k < 3; ++k)
       {
         c.corner[k] = none;
-        if(edge_cut_[f][k]) c.nb[k] = none;
+        if(edge_cut_[f][k] || on_border(f, k)) c.nb[k] = none;
         else { c.nb[k] = face_across(f, k); c.nb_edge[k] = static_cast<std::uint8_t>(across_[f][k].second); }
       }
     }
@@ -226,14 +232,14 @@ private:
     int kg = k;
     const std::uint32_t v = corner_[f][k];
     std::uint32_t steps = 0;
-    while(!edge_cut_[g][(kg + 2) % 3] && steps < degree_[v])
+    while(!ends_sector(g, (kg + 2) % 3) && steps < degree_[v])
     {
       const std::uint32_t p = face_across(g, (kg + 2) % 3);
       kg = position_of(p, v);
       g = p;
       ++steps;
     }
-    const bool closed = (steps == degree_[v]) && !edge_cut_[g][(kg + 2) % 3];
+    const bool closed = (steps == degree_[v]) && !ends_sector(g, (kg + 2) % 3);
     const std::uint32_t id = new_vertex_copy(v, g);
     Fan& fan = fans_[id];
     fan.size = 0;
@@ -245,13 +251,14 @@ private:
       copies_[h].corner[kh] = id;
       ++fan.size;
       fan.last = h;
-      if(fan.size == degree_[v] || edge_cut_[h][kh]) break;
+      if(fan.size == degree_[v] || ends_sector(h, kh)) break;
       const std::uint32_t n = face_across(h, kh);
       kh = position_of(n, v);
       h = n;
     }
     fan.closed = closed;
-    fan.leaf = !closed && fan.size == degree_[v]; // one sector holding the whole star: a leaf of K
+    // one sector holding the whole star: a leaf of K (on the border: the whole path)
+    fan.leaf = !closed && fan.size == degree_[v] && !fan.border;
     if(fan.leaf) ++stats_.number_of_leaf_vertices;
   }
 
@@ -356,12 +363,16 @@ private:
     const std::uint32_t sv = static_cast<std::uint32_t>(get(maps_.vim, src.vertex));
     const std::uint32_t f = static_cast<std::uint32_t>(get(maps_.fim, src.location.first));
     E.source_vertex = vertex_at<Mesh>(evertex, f, position_of(f, sv));
-    if(E.original_vertex[E.source_vertex] != sv || CGAL::is_border(E.source_vertex, E.mesh))
+    if(E.original_vertex[E.source_vertex] != sv || (CGAL::is_border(E.source_vertex, E.mesh) && !border_vertex_[sv]))
       throw Algorithm_error("the source is not an interior vertex of the extended surface");
   }
 
   // the face of M across edge k of face f
   std::uint32_t face_across(std::uint32_t f, int k) const { return static_cast<std::uint32_t>(across_[f][k].first); }
+  // edge k of face f is on the border of M: E never grows across it
+  bool on_border(std::uint32_t f, int k) const { return across_[f][k].first == no_face_across; }
+  // a sector of D ends at a cut edge or at the border
+  bool ends_sector(std::uint32_t f, int k) const { return edge_cut_[f][k] || on_border(f, k); }
 
   int position_of(std::uint32_t f, std::uint32_t v) const
   {
@@ -378,7 +389,7 @@ private:
   std::uint32_t new_vertex_copy(std::uint32_t v, std::uint32_t first)
   {
     const std::uint32_t id = static_cast<std::uint32_t>(vertex_copies_.add());
-    fans_.push_back(Fan{v, first, first, 1, false, false});
+    fans_.push_back(Fan{v, first, first, 1, false, false, border_vertex_[v] != 0});
     return id;
   }
   std::uint32_t limit(const Fan& f) const { return f.leaf ? leaf_winding_stars * degree_[f.vertex] : degree_[f.vertex]; }
@@ -436,7 +447,7 @@ private:
       const std::uint32_t x = find(pending.back());
       pending.pop_back();
       const Fan fx = fans_[x];
-      if(fx.closed || fx.leaf || fx.size != degree_[fx.vertex]) continue;
+      if(fx.closed || fx.leaf || fx.border || fx.size != degree_[fx.vertex]) continue;
       // The end faces L (last) and F (first) hold the two copies of one edge (v, z).
       const std::uint32_t L = fx.last, F = fx.first;
       const int kL = position_of_copy(L, x), kF = position_of_copy(F, x);
@@ -453,7 +464,7 @@ private:
       {
         // this gluing closes z's fan too: only right if it is a whole star
         const Fan& fz = fans_[zL];
-        if(fz.leaf || fz.closed || fz.first != L || fz.last != F || fz.size != degree_[fz.vertex])
+        if(fz.leaf || fz.closed || fz.border || fz.first != L || fz.last != F || fz.size != degree_[fz.vertex])
         {
           leave_open(x);
           continue;
@@ -510,6 +521,7 @@ private:
   Faces_across across_;
   std::vector<std::array<bool, 3> > edge_cut_;
   std::vector<std::uint32_t> degree_;
+  std::vector<char> border_vertex_; // per vertex of M
   std::vector<Copy> copies_;
   Union_find vertex_copies_; // vertex copies merged by closing fans
   std::vector<Fan> fans_;

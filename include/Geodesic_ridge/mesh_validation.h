@@ -131,10 +131,12 @@ public:
 private:
   // The first offending halfedge of each edge rule (invalid_index: none) and
   // what its message needs.
+  // in the link of vertex `owner`, the link vertex after this one
+  struct Link_step { std::size_t owner, to; };
+
   struct Edge_problems
   {
     std::size_t non_manifold = invalid_index, non_manifold_count = 0;
-    std::size_t boundary = invalid_index, boundary_count = 0;
     std::size_t misoriented = invalid_index, misoriented_other = 0;
   };
 
@@ -301,10 +303,7 @@ private:
         }
       }
       else if(j - i == 1)
-      {
-        ++p.boundary_count;
-        p.boundary = (std::min)(p.boundary, h);
-      }
+        ; // a border edge
       else if(source(order[i]) == source(order[i + 1]) && h < p.misoriented)
       {
         p.misoriented = h;
@@ -327,14 +326,6 @@ private:
           << " faces (first: face " << h / 3 << "); only manifold meshes are supported";
       fail(msg);
     }
-    if(p.boundary_count > 0)
-    {
-      const std::size_t h = p.boundary;
-      msg << "mesh has " << p.boundary_count << " boundary edge" << (p.boundary_count == 1 ? "" : "s")
-          << " (first: vertices " << source(h) << "-" << target(h) << " of face " << h / 3
-          << "); only closed meshes are supported";
-      fail(msg);
-    }
     if(p.misoriented != invalid_index)
     {
       const std::size_t h = p.misoriented;
@@ -345,52 +336,56 @@ private:
     }
   }
 
-  // The number of cycles of the link of v, whose corners are [first, last).
+  // The fans of vertex v (corners [first, last)): the components of its link.
   // Each corner (v; a, b) of a face gives the link edge a -> b; the mesh being
-  // closed, oriented and edge-manifold, `next` is then a permutation of the
-  // link vertices. `visited` stamps a link vertex with v.
+  // oriented and edge-manifold, each link vertex has at most one successor.
+  // Paths start at a link vertex with no predecessor (at the border); cycles
+  // are the rest. `next`, `visited` and `has_predecessor` are stamped with v.
   template <class Iterator>
-  std::size_t count_link_cycles(std::size_t v, Iterator first, Iterator last, std::vector<std::size_t>& next,
-                                std::vector<std::size_t>& visited) const
+  std::size_t count_link_fans(std::size_t v, Iterator first, Iterator last, std::vector<Link_step>& next,
+                              std::vector<std::size_t>& visited, std::vector<std::size_t>& has_predecessor) const
   {
+    auto first_of = [this](std::size_t c) { return tri_[3 * (c / 3) + (c % 3 + 1) % 3]; };
     for(Iterator it = first; it != last; ++it)
     {
       const std::size_t c = *it, f = c / 3, k = c % 3;
-      next[tri_[3 * f + (k + 1) % 3]] = tri_[3 * f + (k + 2) % 3];
+      const std::size_t a = tri_[3 * f + (k + 1) % 3], b = tri_[3 * f + (k + 2) % 3];
+      next[a] = {v, b};
+      has_predecessor[b] = v;
     }
-    std::size_t cycles = 0;
-    for(Iterator it = first; it != last; ++it)
-    {
-      const std::size_t c = *it;
-      std::size_t x = tri_[3 * (c / 3) + (c % 3 + 1) % 3];
-      if(visited[x] == v)
-        continue;
-      ++cycles;
-      while(x != invalid_index && visited[x] != v)
+    auto walk = [&](std::size_t x) {
+      while(visited[x] != v)
       {
         visited[x] = v;
-        x = next[x];
+        if(next[x].owner != v) return; // the end of a path
+        x = next[x].to;
       }
-    }
-    return cycles;
+    };
+    std::size_t fans = 0;
+    for(Iterator it = first; it != last; ++it) // paths first: from their starts
+      if(has_predecessor[first_of(*it)] != v && visited[first_of(*it)] != v) { ++fans; walk(first_of(*it)); }
+    for(Iterator it = first; it != last; ++it) // then cycles
+      if(visited[first_of(*it)] != v) { ++fans; walk(first_of(*it)); }
+    return fans;
   }
 
-  // A vertex is manifold iff its link is one cycle.
+  // A vertex is manifold iff its link is one cycle (inside) or one path (on
+  // the border).
   void check_manifold_vertices() const
   {
     std::vector<std::size_t> begin;
     const std::vector<std::size_t> corners =
       bucket_sort(3 * nf_, nv_, [this](std::size_t c) { return tri_[c]; }, begin);
-    std::vector<std::size_t> next(nv_, invalid_index);
-    std::vector<std::size_t> visited(nv_, invalid_index);
+    std::vector<Link_step> next(nv_, Link_step{invalid_index, invalid_index});
+    std::vector<std::size_t> visited(nv_, invalid_index), has_predecessor(nv_, invalid_index);
     for(std::size_t v = 0; v < nv_; ++v)
     {
-      const std::size_t cycles =
-        count_link_cycles(v, corners.begin() + begin[v], corners.begin() + begin[v + 1], next, visited);
-      if(cycles > 1)
+      const std::size_t fans = count_link_fans(v, corners.begin() + begin[v], corners.begin() + begin[v + 1], next,
+                                               visited, has_predecessor);
+      if(fans > 1)
       {
         std::ostringstream msg;
-        msg << "vertex " << v << " is non-manifold (its faces form " << cycles
+        msg << "vertex " << v << " is non-manifold (its faces form " << fans
             << " separate fans); only manifold meshes are supported";
         fail(msg);
       }
@@ -459,7 +454,7 @@ private:
 ///    computes a distance per vertex, and an isolated vertex has none;
 /// 7. no two faces are on the same three vertices (whatever their orientation);
 /// 8. every edge is shared by at most two faces (edge-manifold);
-/// 9. every edge is shared by exactly two faces: only closed meshes are supported;
+/// 9. (edges of one face are the border: surfaces with boundary are supported);
 /// 10. the orientation is consistent: the two faces of an edge traverse it in
 ///     opposite directions;
 /// 11. every vertex is manifold: its faces form a single fan (its link, walked
@@ -472,7 +467,7 @@ private:
 ///     epsilon (coordinates of another kernel are first converted to `double`).
 ///
 /// Each rule relies on the previous ones (for instance the fan walk of rule 11
-/// needs closed, oriented, edge-manifold input). The cost is
+/// needs oriented, edge-manifold input). The cost is
 /// O(V + F) time and memory (bucket sorts, no hash map): a 200k-face
 /// mesh validates in a few tens of milliseconds.
 ///

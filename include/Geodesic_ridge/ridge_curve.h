@@ -100,7 +100,9 @@ struct Ridge_curve_statistics
   /// \name The Ridge
   //@{
   /// The ridge's segments, junctions (points where three or more regions
-  /// meet), free ends, connected components (1) and independent cycles (2g).
+  /// meet), free ends (not on the border), connected components and
+  /// independent cycles of the ridge with the border of M: 1 and 2g + b (b
+  /// border loops; 2g on a closed mesh).
   std::size_t ridge_segments = 0, junctions = 0, free_ends = 0, components = 0, cycles = 0;
   //@}
   /// the ridge's total length
@@ -396,6 +398,7 @@ public:
 
   void run(std::vector<std::vector<Ridge_point<Point> > >& polylines)
   {
+    label_border_loops();
     compute_envelopes();
     for(std::size_t c = 0; c < cells_.size(); ++c) fronts_.add();
     segments_inside_faces();
@@ -484,10 +487,11 @@ private:
     return none;
   }
 
-  std::size_t add_node(const Key& key, std::size_t f, const std::array<Q, 3>& lambda)
+  std::size_t add_node(const Key& key, std::size_t f, const std::array<Q, 3>& lambda, std::size_t loop = none)
   {
     auto it = node_of_.find(key);
     if(it != node_of_.end()) return it->second;
+    node_loop_.push_back(loop);
     Ridge_point<Point> p;
     p.face = f;
     p.barycentric = {{CGAL::to_double(lambda[0]), CGAL::to_double(lambda[1]), CGAL::to_double(lambda[2])}};
@@ -498,13 +502,47 @@ private:
     return nodes_.size() - 1;
   }
 
+  // The loops of the border of M (b of them): per vertex its loop, or none
+  // inside. K ∪ ∂M, and so the ridge with the border, is one connected graph;
+  // each loop counts as one node of it (`loop_node`), joined to the ridge
+  // nodes on it.
+  void label_border_loops()
+  {
+    const std::size_t nv = num_vertices(tm_);
+    Union_find loops(nv);
+    std::vector<char> on_border(nv, 0);
+    for(halfedge_descriptor h : halfedges(tm_))
+      if(is_border(h, tm_))
+      {
+        const std::size_t a = get(maps_.vim, source(h, tm_)), b = get(maps_.vim, target(h, tm_));
+        on_border[a] = on_border[b] = 1;
+        loops.unite(a, b);
+      }
+    loop_of_vertex_.assign(nv, none);
+    std::map<std::size_t, std::size_t> label;
+    for(std::size_t v = 0; v < nv; ++v)
+      if(on_border[v]) loop_of_vertex_[v] = label.emplace(loops.find(v), label.size()).first->second;
+    number_of_loops_ = label.size();
+  }
+  std::size_t loop_node(std::size_t loop) const { return nodes_.size() + loop; }
+  // `uf`, over the ridge nodes and then the loops: the nodes on a loop joined to it
+  void join_border_nodes(Union_find& uf) const
+  {
+    for(std::size_t v = 0; v < nodes_.size(); ++v)
+      if(node_loop_[v] != none) uf.unite(v, loop_node(node_loop_[v]));
+  }
+
   // a point of face f given by exact barycentric coordinates: normalized to its feature
   std::size_t node_at(std::size_t f, const std::array<Q, 3>& lambda)
   {
     const auto h = faces_.corner_halfedges(f);
     int zeros = 0, nz = -1;
     for(int k = 0; k < 3; ++k) { if(CGAL::is_zero(lambda[k])) ++zeros; else nz = k; }
-    if(zeros == 2) return add_node(Key(0, get(maps_.vim, source(h[nz], tm_)), Q(0), Q(0)), f, lambda);
+    if(zeros == 2)
+    {
+      const std::size_t v = get(maps_.vim, source(h[nz], tm_));
+      return add_node(Key(0, v, Q(0), Q(0)), f, lambda, loop_of_vertex_[v]);
+    }
     for(int k = 0; k < 3; ++k)
       if(CGAL::is_zero(lambda[(k + 2) % 3])) // on edge k, from corner k to corner k+1
       {
@@ -512,7 +550,9 @@ private:
         // remember the halfedge it was made from, so halfedge(e) is no orientation)
         const bool forward = get(maps_.vim, source(h[k], tm_)) < get(maps_.vim, target(h[k], tm_));
         const Q t = forward ? lambda[(k + 1) % 3] : lambda[k];
-        return add_node(Key(1, get(maps_.eim, edge(h[k], tm_)), t, Q(0)), f, lambda);
+        const std::size_t loop =
+            is_border(edge(h[k], tm_), tm_) ? loop_of_vertex_[get(maps_.vim, source(h[k], tm_))] : none;
+        return add_node(Key(1, get(maps_.eim, edge(h[k], tm_)), t, Q(0)), f, lambda, loop);
       }
     return add_node(Key(2, f, lambda[1], lambda[2]), f, lambda);
   }
@@ -542,11 +582,24 @@ private:
 
   // the jump of the gradient across edge k1 of face f1 (edge k2 of f2) between
   // cells c1 and c2
+  // None at the source: the distance is a cone there, and the kinks of its
+  // linear interpolation across the edges at the source vertex, or of the
+  // source's face, are no fronts meeting.
   Gradient_jump edge_jump(std::size_t f1, int k1, std::size_t c1, std::size_t f2, int k2, std::size_t c2) const
   {
+    if(at_source(f1, k1) || at_source(f2, k2)) return Gradient_jump{0, 0};
     const auto cp1 = faces_.corner_points(f1), cp2 = faces_.corner_points(f2);
     return gradient_jump_across_edge(cp1[k1], cp1[(k1 + 1) % 3], cp1[(k1 + 2) % 3], cp2[(k2 + 2) % 3],
                                      field_gradient(cp1, cells_[c1].field), field_gradient(cp2, cells_[c2].field));
+  }
+
+  // edge k of face f: an edge of the source's face, or at the source vertex
+  bool at_source(std::size_t f, int k) const
+  {
+    if(!E_.source_is_vertex) return f == std::size_t(E_.source_location.first);
+    const std::size_t s = E_.original_vertex[E_.source_vertex];
+    const auto h = faces_.corner_halfedges(f);
+    return std::size_t(get(maps_.vim, source(h[k], tm_))) == s || std::size_t(get(maps_.vim, target(h[k], tm_))) == s;
   }
 
   // A kink inside one sheet: glued copies whose gradients jump by at least
@@ -568,6 +621,7 @@ private:
         if(edge_done[e]) continue;
         edge_done[e] = 1;
         const halfedge_descriptor h2 = opposite(h1s[k1], tm_);
+        if(is_border(h2, tm_)) continue; // the border of M: one side only
         const std::size_t f2 = get(maps_.fim, face(h2, tm_));
         const auto h2s = faces_.corner_halfedges(f2);
         int k2 = 0;
@@ -690,7 +744,8 @@ private:
   // cycle, so no region is split again.
   void rejoin_pieces()
   {
-    Union_find pieces(nodes_.size());
+    Union_find pieces(nodes_.size() + number_of_loops_);
+    join_border_nodes(pieces); // (a piece on the border is joined to it)
     for(const Segment& sg : segments_) if(sg.ridge) pieces.unite(sg.a, sg.b);
     std::vector<std::size_t> merged;
     for(std::size_t i = 0; i < segments_.size(); ++i)
@@ -740,7 +795,8 @@ private:
         ++live[segments_[i].a]; ++live[segments_[i].b];
       }
     std::vector<std::size_t> leaves;
-    for(std::size_t v = 0; v < nodes_.size(); ++v) if(live[v] == 1) leaves.push_back(v);
+    // (a node on the border is no free end: the ridge goes on along the border)
+    for(std::size_t v = 0; v < nodes_.size(); ++v) if(live[v] == 1 && node_loop_[v] == none) leaves.push_back(v);
     while(!leaves.empty())
     {
       const std::size_t v = leaves.back();
@@ -759,7 +815,7 @@ private:
       ++(weak ? st_.pruned_spur_segments : st_.pruned_flat_end_segments);
       --live[v];
       const std::size_t w = segments_[seg].a == v ? segments_[seg].b : segments_[seg].a;
-      if(--live[w] == 1) leaves.push_back(w);
+      if(--live[w] == 1 && node_loop_[w] == none) leaves.push_back(w);
     }
   }
 
@@ -779,6 +835,9 @@ private:
       for(vertex_descriptor v : vertices(a.tm_)) vertex_of[get(a.maps_.vim, v)] = v;
     }
 
+    // Gaussian curvature; none on the border (its angle sum measures the border's turning)
+    double curvature(std::size_t v) const { return a.loop_of_vertex_[v] == none ? angles.curvature(v) : 0.0; }
+
     double operator()(std::size_t node)
     {
       const double radius = 2.5 * a.mean_edge_;
@@ -788,7 +847,7 @@ private:
       for(const auto h : a.faces_.corner_halfedges(a.nodes_[node].face))
       {
         const std::size_t v = get(a.maps_.vim, source(h, a.tm_));
-        if(seen_at[v] != node) { seen_at[v] = node; stack.push_back(v); total += angles.curvature(v); }
+        if(seen_at[v] != node) { seen_at[v] = node; stack.push_back(v); total += curvature(v); }
       }
       while(!stack.empty())
       {
@@ -800,7 +859,7 @@ private:
           if(seen_at[w] == node) continue;
           seen_at[w] = node;
           if(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(a.maps_.vpm, vertex_of[w]), p))) > radius) continue;
-          total += angles.curvature(w);
+          total += curvature(w);
           stack.push_back(w);
         }
       }
@@ -813,22 +872,28 @@ private:
     return std::sqrt(CGAL::to_double(CGAL::squared_distance(nodes_[s.a].point, nodes_[s.b].point)));
   }
 
-  // Keep the main component (largest length) as polylines; drop degenerate segments.
+  // Keep the main component as polylines: on a closed mesh the longest one,
+  // with a border every piece joined to the border (K ∪ ∂M is connected, and
+  // so is the ridge with the border); drop degenerate segments.
   void keep_main_component(std::vector<std::vector<Ridge_point<Point> > >& polylines)
   {
-    Union_find comp(nodes_.size());
+    Union_find comp(nodes_.size() + number_of_loops_);
+    join_border_nodes(comp); // (a piece on the border is joined to it)
     for(const Segment& s : segments_) if(s.ridge && s.a != s.b) comp.unite(s.a, s.b);
     std::map<std::size_t, double> comp_length;
     for(const Segment& s : segments_) if(s.ridge && s.a != s.b) comp_length[comp.find(s.a)] += length(s);
-    std::size_t main = none;
+    std::set<std::size_t> main;
+    for(std::size_t loop = 0; loop < number_of_loops_; ++loop) main.insert(comp.find(loop_node(loop)));
     double best = -1;
-    for(const auto& [r, l] : comp_length) if(l > best) { best = l; main = r; }
-    st_.dropped_components = comp_length.empty() ? 0 : comp_length.size() - 1;
+    if(number_of_loops_ == 0)
+      for(const auto& [r, l] : comp_length) if(l > best) { best = l; main = {r}; }
+    st_.dropped_components = 0;
+    for(const auto& rl : comp_length) st_.dropped_components += main.count(rl.first) == 0;
 
     std::vector<std::pair<std::size_t, std::size_t> > graph;
     std::vector<std::size_t> degree(nodes_.size(), 0);
     for(const Segment& s : segments_)
-      if(s.ridge && s.a != s.b && comp.find(s.a) == main)
+      if(s.ridge && s.a != s.b && main.count(comp.find(s.a)))
       {
         graph.emplace_back(s.a, s.b);
         ++degree[s.a]; ++degree[s.b];
@@ -836,16 +901,7 @@ private:
         nodes_[s.b].angle = std::max(nodes_[s.b].angle, s.angle);
         st_.total_length += length(s);
       }
-    st_.ridge_segments = graph.size();
-    std::size_t used_nodes = 0;
-    for(std::size_t d : degree)
-    {
-      used_nodes += d > 0;
-      st_.junctions += d >= 3;
-      st_.free_ends += d == 1;
-    }
-    st_.components = graph.empty() ? 0 : 1;
-    st_.cycles = graph.empty() ? 0 : graph.size() + 1 - used_nodes;
+    count_topology(graph, degree);
     polylines.clear();
     for(const auto& chain : graph_to_chains(nodes_.size(), graph))
     {
@@ -853,6 +909,33 @@ private:
       for(std::size_t v : chain) pl.push_back(nodes_[v]);
       polylines.push_back(std::move(pl));
     }
+  }
+
+  // Junctions, free ends, and the components and cycle rank of the ridge with
+  // the border: each loop collapsed to a node, joined to the ridge nodes on it,
+  // and counted again as the cycle it is.
+  void count_topology(const std::vector<std::pair<std::size_t, std::size_t> >& graph,
+                      const std::vector<std::size_t>& degree)
+  {
+    st_.ridge_segments = graph.size();
+    Union_find uf(nodes_.size() + number_of_loops_);
+    join_border_nodes(uf); // (a piece on the border is joined to it)
+    std::size_t used_nodes = 0, border_links = 0;
+    for(std::size_t v = 0; v < nodes_.size(); ++v)
+    {
+      if(degree[v] == 0) continue;
+      ++used_nodes;
+      border_links += node_loop_[v] != none;
+      st_.junctions += degree[v] >= 3;
+      st_.free_ends += degree[v] == 1 && node_loop_[v] == none;
+    }
+    for(const auto& [a, b] : graph) uf.unite(a, b);
+    std::set<std::size_t> components;
+    for(std::size_t v = 0; v < nodes_.size(); ++v) if(degree[v] > 0) components.insert(uf.find(v));
+    for(std::size_t loop = 0; loop < number_of_loops_; ++loop) components.insert(uf.find(loop_node(loop)));
+    st_.components = components.size();
+    // rank = edges - vertices + components, of the graph with the loop nodes, plus the b loops
+    if(st_.components > 0) st_.cycles = graph.size() + border_links + st_.components - used_nodes;
   }
 
   const TriangleMesh& tm_;
@@ -876,6 +959,9 @@ private:
   std::vector<Ridge_point<Point> > nodes_;
   std::vector<Segment> segments_;
   Union_find fronts_; // cells that are one front
+  // the border: per vertex of M its loop (or none), per node its loop (or none)
+  std::vector<std::size_t> loop_of_vertex_, node_loop_;
+  std::size_t number_of_loops_ = 0;
 };
 
 template <class TriangleMesh, class Point, class Maps>

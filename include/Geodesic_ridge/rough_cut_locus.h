@@ -60,6 +60,7 @@ enum class Edge_role : unsigned char
 struct Rough_cut_locus_statistics
 {
   int genus = 0;                          ///< the genus g of the mesh, from its Euler characteristic
+  std::size_t number_of_boundary_loops = 0; ///< b: the loops of border edges (0 on a closed mesh)
   std::size_t number_of_vertices = 0;     ///< vertices of the mesh
   std::size_t number_of_edges = 0;        ///< edges of the mesh
   std::size_t number_of_faces = 0;        ///< faces of the mesh
@@ -71,8 +72,8 @@ struct Rough_cut_locus_statistics
   std::size_t number_of_leaf_extension_edges = 0; ///< pruned dual edges kept for their curvature (`leaf_curvature`)
   std::size_t number_of_cut_edges = 0;        ///< |K|
   std::size_t number_of_cut_vertices = 0;    ///< vertices of K
-  std::size_t number_of_cut_leaves = 0;       ///< vertices of degree 1 in K
-  std::size_t cut_cycle_rank = 0;             ///< |K| - |V(K)| + 1; equals 2g
+  std::size_t number_of_cut_leaves = 0;       ///< vertices of degree 1 in K, not on the border
+  std::size_t cut_cycle_rank = 0;             ///< of K ∪ ∂M (K on a closed mesh): equals 2g + b
   std::size_t number_of_closing_rungs = 0;    ///< rungs added back to close the 2g cycles
   std::size_t number_of_teeth_pruned = 0;     ///< one-edge leaves of K removed
   std::size_t number_of_curvature_pruned_dual_edges = 0; ///< kept dual edges of false branches (see `branch_curvature`)
@@ -210,8 +211,9 @@ private:
     st_.number_of_vertices = nv_;
     st_.number_of_edges = ne_;
     st_.number_of_faces = nf_;
+    st_.number_of_boundary_loops = boundary_loops();
     const long chi = static_cast<long>(nv_) - static_cast<long>(ne_) + static_cast<long>(nf_);
-    st_.genus = static_cast<int>((2 - chi) / 2);
+    st_.genus = static_cast<int>((2 - chi - static_cast<long>(st_.number_of_boundary_loops)) / 2);
     edge_of_.resize(ne_);
     for(edge_descriptor e : edges(tm_))
     {
@@ -229,6 +231,27 @@ private:
     is_seed_.assign(nv_, 0);
     for(const auto& s : src_.seeds) is_seed_[vi(s.first)] = 1;
   }
+
+  // The number of loops of border edges; marks the border vertices.
+  std::size_t boundary_loops()
+  {
+    Union_find loops(nv_);
+    boundary_vertex_.assign(nv_, 0);
+    for(halfedge_descriptor h : halfedges(tm_))
+      if(is_border(h, tm_))
+      {
+        boundary_vertex_[vi(source(h, tm_))] = boundary_vertex_[vi(target(h, tm_))] = 1;
+        loops.unite(vi(source(h, tm_)), vi(target(h, tm_)));
+      }
+    std::size_t inside = 0;
+    for(std::size_t v = 0; v < nv_; ++v) inside += !boundary_vertex_[v];
+    return loops.number_of_sets() - inside;
+  }
+  bool has_boundary() const { return st_.number_of_boundary_loops > 0; }
+  bool on_boundary(vertex_descriptor v) const { return boundary_vertex_[vi(v)] != 0; }
+  // Gaussian curvature at v; 0 on the border, where the angle sum measures the
+  // turning of the border, not curvature
+  double curvature(vertex_descriptor v) const { return on_boundary(v) ? 0.0 : angles_.curvature(vi(v)); }
 
   // Step 1: Boost's Dijkstra on the mesh graph, several seeds for a surface point.
   void shortest_path_tree()
@@ -337,21 +360,32 @@ private:
       const bool in_tree = (r_.parent[vi(a)] == b && a != b) || (r_.parent[vi(b)] == a && a != b);
       if(in_tree)
         r_.edge_role[ei(e)] = Edge_role::shortest_path_tree;
-      else if(is_source_face[fi(face(h, tm_))] || is_source_face[fi(face(opposite(h, tm_), tm_))])
+      else if(touches_source_face(h, is_source_face) || touches_source_face(opposite(h, tm_), is_source_face))
         r_.edge_role[ei(e)] = Edge_role::source_face;
       else
         r_.dual_edges.push_back(e);
     }
     st_.number_of_dual_edges = r_.dual_edges.size();
-    const long expected = static_cast<long>(nf_ - src_.faces.size()) - 1 + 2 * st_.genus;
+    // T* has a node per face not holding the source, and one for the border
+    // (all its loops): a spanning tree plus 2g + b - 1 independent cycles
+    const long nodes = static_cast<long>(nf_ - src_.faces.size()) + (has_boundary() ? 1 : 0);
+    const long expected = nodes - 1 + 2 * st_.genus + (has_boundary() ? static_cast<long>(st_.number_of_boundary_loops) - 1 : 0);
     if(static_cast<long>(r_.dual_edges.size()) != expected)
       throw Algorithm_error("the dual of the shortest-path tree has " + std::to_string(r_.dual_edges.size()) +
                             " edges, expected " + std::to_string(expected));
   }
 
+  bool touches_source_face(halfedge_descriptor h, const std::vector<char>& is_source_face) const
+  {
+    return !is_border(h, tm_) && is_source_face[fi(face(h, tm_))];
+  }
+  // the node of T* of the face of h: the face's index, or the border node
+  std::size_t node_of(halfedge_descriptor h) const { return is_border(h, tm_) ? border_node() : fi(face(h, tm_)); }
+  std::size_t border_node() const { return nf_; }
+
   void measure_face_areas()
   {
-    area_.resize(nf_);
+    area_.assign(nf_ + 1, 0.0); // (the border node has none)
     r_.total_area = 0;
     for(face_descriptor f : faces(tm_))
     {
@@ -370,14 +404,14 @@ private:
     nd_ = r_.dual_edges.size();
     dual_faces_of_.resize(nd_);
     dual_of_face_.resize(nf_);
-    dual_degree_.assign(nf_, 0);
+    dual_degree_.assign(nf_ + 1, 0); // the border node's is never read
     for(std::size_t d = 0; d < nd_; ++d)
     {
       const halfedge_descriptor h = halfedge(r_.dual_edges[d], tm_);
-      const std::size_t f1 = fi(face(h, tm_)), f2 = fi(face(opposite(h, tm_), tm_));
+      const std::size_t f1 = node_of(h), f2 = node_of(opposite(h, tm_));
       dual_faces_of_[d] = {f1, f2};
-      dual_of_face_[f1][dual_degree_[f1]++] = d;
-      dual_of_face_[f2][dual_degree_[f2]++] = d;
+      for(std::size_t f : {f1, f2})
+        if(f != border_node()) dual_of_face_[f][dual_degree_[f]++] = d;
     }
   }
 
@@ -389,8 +423,8 @@ private:
   {
     if(!curvature_sums()) return;
     angles_ = corner_angles(tm_, maps_.vpm, maps_.vim, maps_.fim);
-    curvature_share_.assign(nf_, 0.0);
-    positive_share_.assign(nf_, 0.0);
+    curvature_share_.assign(nf_ + 1, 0.0);
+    positive_share_.assign(nf_ + 1, 0.0);
     for(face_descriptor f : faces(tm_))
     {
       halfedge_descriptor h = halfedge(f, tm_);
@@ -400,8 +434,8 @@ private:
         // the source is no leaf of its own cut locus
         if(src_.kind == Source::ON_VERTEX && source(h, tm_) == src_.vertex) continue;
         const double share = angles_.angle[fi(f)][k] / angles_.angle_sum[v];
-        curvature_share_[fi(f)] += angles_.curvature(v) * share;
-        positive_share_[fi(f)] += std::max(0.0, angles_.curvature(v)) * share;
+        curvature_share_[fi(f)] += curvature(source(h, tm_)) * share;
+        positive_share_[fi(f)] += std::max(0.0, curvature(source(h, tm_))) * share;
       }
     }
   }
@@ -409,10 +443,15 @@ private:
   // Peel leaves of T* (O(F)): when a face becomes a leaf, its one remaining dual
   // edge separates the faces accumulated in it from the rest. What is never
   // peeled is the 2-core (the non-contractible cycles and the paths joining
-  // them); its edges get the total area.
+  // them); its edges get the total area. The border node is never peeled: with
+  // a border, T* is rooted there, and an edge's significance is the area of
+  // its side away from the border (the other side reaches the border, and a
+  // branch is no less significant for reaching it).
   void peel_significance()
   {
     std::vector<double> branch_curvature(curvature_share_), branch_positive(positive_share_);
+    branch_curvature.resize(nf_ + 1, 0.0);
+    branch_positive.resize(nf_ + 1, 0.0);
     subtree_curvature_.assign(curvature_sums() ? nd_ : 0, 0.0);
     subtree_positive_.assign(curvature_sums() ? nd_ : 0, 0.0);
     std::vector<double> accumulated(area_);
@@ -434,7 +473,7 @@ private:
       child_face_[d] = f;
       peel_order_.push_back(d);
       const double side = accumulated[f];
-      r_.significance[ei(r_.dual_edges[d])] = (std::min)(side, node_total_ - side);
+      r_.significance[ei(r_.dual_edges[d])] = has_boundary() ? side : (std::min)(side, node_total_ - side);
       const std::size_t p = across(d, f);
       accumulated[p] += side;
       if(curvature_sums())
@@ -445,7 +484,7 @@ private:
         branch_positive[p] += branch_positive[f];
       }
       degree[f] = 0;
-      if(--degree[p] == 1) queue.push_back(p);
+      if(--degree[p] == 1 && p != border_node()) queue.push_back(p);
     }
     for(std::size_t d = 0; d < nd_; ++d)
       if(!peeled_[d])
@@ -463,7 +502,7 @@ private:
     extension_.assign(nd_, 0);
     for(std::size_t d = 0; d < nd_; ++d)
       if(significance(d) >= threshold_) { kept_[d] = 1; ++nkept_; }
-    if(nkept_ == 0 && nd_ > 0)
+    if(nkept_ == 0 && nd_ > 0 && !has_boundary())
     {
       // Genus 0 with a tolerance close to 1/2: keep the most significant dual
       // edge, so that K is one slit and the cut surface still a disk.
@@ -474,7 +513,7 @@ private:
       nkept_ = 1;
       st_.fallback_single_rung = true;
     }
-    kept_degree_.assign(nf_, 0);
+    kept_degree_.assign(nf_ + 1, 0);
     for(std::size_t d = 0; d < nd_; ++d)
       if(kept_[d])
       {
@@ -499,13 +538,13 @@ private:
       // two paths' meeting: the branch's side, or on genus 0 the side of less curvature
       auto enclosed = [&](std::size_t d) {
         const double c = subtree_curvature_[d];
-        if(st_.genus == 0 && total_curvature - c < c)
+        if(st_.genus == 0 && !has_boundary() && total_curvature - c < c)
           return std::make_pair(total_curvature - c, total_positive - subtree_positive_[d]);
         return std::make_pair(c, subtree_positive_[d]);
       };
       std::vector<std::size_t> tips;
       for(std::size_t f = 0; f < nf_; ++f) if(kept_degree_[f] == 1) tips.push_back(f);
-      while(!tips.empty() && nkept_ > 1)
+      while(!tips.empty() && (nkept_ > 1 || has_boundary())) // (with a border, K may be empty)
       {
         const std::size_t f = tips.back();
         tips.pop_back();
@@ -524,7 +563,7 @@ private:
         ++st_.number_of_curvature_pruned_dual_edges;
         kept_degree_[f] = 0;
         const std::size_t p = across(d, f);
-        if(--kept_degree_[p] == 1) tips.push_back(p);
+        if(--kept_degree_[p] == 1 && p != border_node()) tips.push_back(p);
       }
     }
     for(std::size_t f = 0; f < nf_; ++f) st_.number_of_kept_dual_leaves += (kept_degree_[f] == 1);
@@ -544,14 +583,15 @@ private:
   void extend_leaves_by_curvature()
   {
     auto parent_of = [&](std::size_t d) { return across(d, child_face_[d]); };
-    std::vector<std::size_t> best_child(nf_, none);
+    std::vector<std::size_t> best_child(nf_ + 1, none);
     for(std::size_t d : peel_order_)
     {
       const std::size_t p = parent_of(d);
       if(best_child[p] == none || subtree_curvature_[d] > subtree_curvature_[best_child[p]]) best_child[p] = d;
     }
-    std::vector<char> inside(nf_, 0); // 1 kept, 2 reached by an extension
+    std::vector<char> inside(nf_ + 1, 0); // 1 kept (the border always), 2 reached by an extension
     for(std::size_t f = 0; f < nf_; ++f) inside[f] = kept_degree_[f] > 0 ? 1 : 0;
+    inside[border_node()] = has_boundary() ? 1 : 0;
     for(auto it = peel_order_.rbegin(); it != peel_order_.rend(); ++it)
     {
       const std::size_t d = *it;
@@ -568,6 +608,7 @@ private:
   void record_dual_roles()
   {
     std::vector<unsigned char> degree_with_extension(kept_degree_);
+    degree_with_extension[border_node()] = 0; // (not a face: never a leaf)
     for(std::size_t d = 0; d < nd_; ++d)
       if(extension_[d])
       {
@@ -610,12 +651,17 @@ private:
   // maximum-significance spanning tree (Kruskal).
   void span_rungs()
   {
-    for(std::size_t d = 0; d < nd_; ++d) if(kept_[d] || extension_[d]) rungs_.push_back(d);
+    for(std::size_t d = 0; d < nd_; ++d)
+      if((kept_[d] || extension_[d]) && !is_border(r_.dual_edges[d], tm_)) rungs_.push_back(d);
     std::stable_sort(rungs_.begin(), rungs_.end(),
                      [&](std::size_t a, std::size_t b) { return significance(a) > significance(b); });
     r_.is_cut_edge.assign(ne_, 0);
     cut_degree_.assign(nv_, 0);
+    // each border loop is one piece of K ∪ ∂M already: a rung path that joins
+    // two loops is no cycle, one that returns to its loop is
     Union_find uf(nv_);
+    for(halfedge_descriptor h : halfedges(tm_))
+      if(is_border(h, tm_)) uf.unite(vi(source(h, tm_)), vi(target(h, tm_)));
     for(std::size_t d : rungs_)
     {
       const edge_descriptor e = r_.dual_edges[d];
@@ -663,7 +709,7 @@ private:
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of_[f], tm_), tm_))
       {
         const edge_descriptor eh = edge(h, tm_);
-        if(r_.is_cut_edge[ei(eh)] || eh == e) continue;
+        if(r_.is_cut_edge[ei(eh)] || eh == e || is_border(opposite(h, tm_), tm_)) continue;
         const std::size_t g = fi(face(opposite(h, tm_), tm_));
         if(face_mark_[g] == other) { joined = true; return; }
         if(face_mark_[g] != mine) { face_mark_[g] = mine; q.push_back(g); }
@@ -690,18 +736,18 @@ private:
     for(std::size_t i = 0; i < ne_; ++i) cut_size += r_.is_cut_edge[i];
     std::vector<vertex_descriptor> leaves;
     for(vertex_descriptor v : vertices(tm_))
-      if(cut_degree_[vi(v)] == 1) leaves.push_back(v);
-    while(!leaves.empty() && cut_size > 1)
+      if(is_leaf_of_cut(v)) leaves.push_back(v);
+    while(!leaves.empty() && (cut_size > 1 || has_boundary()))
     {
       const vertex_descriptor w = leaves.back();
       leaves.pop_back();
-      if(cut_degree_[vi(w)] != 1) continue;
+      if(!is_leaf_of_cut(w)) continue;
       const halfedge_descriptor hw = cut_halfedge_into(w, GT::null_halfedge());
       if(!cut_beyond[dual_index_of_edge[ei(edge(hw, tm_))]]) continue; // the end of a branch: keep it
       remove_cut(edge(hw, tm_));
       --cut_size;
       const vertex_descriptor u = source(hw, tm_);
-      if(cut_degree_[vi(u)] == 1) leaves.push_back(u);
+      if(is_leaf_of_cut(u)) leaves.push_back(u);
       ++st_.number_of_teeth_pruned;
     }
   }
@@ -709,7 +755,7 @@ private:
   // per dual edge: whether K cuts further out on its branch of T* (always on the 2-core)
   std::vector<char> cut_further_out() const
   {
-    std::vector<char> cut_beyond(nd_, 0), face_has_cut_beyond(nf_, 0);
+    std::vector<char> cut_beyond(nd_, 0), face_has_cut_beyond(nf_ + 1, 0);
     for(std::size_t d : peel_order_)
     {
       const std::size_t c = child_face_[d];
@@ -720,6 +766,9 @@ private:
       if(!peeled_[d]) cut_beyond[d] = 1; // a cycle of the 2-core never ends
     return cut_beyond;
   }
+
+  // a free end of K: one cut edge, and not on the border (which K ∪ ∂M goes on along)
+  bool is_leaf_of_cut(vertex_descriptor v) const { return cut_degree_[vi(v)] == 1 && !on_boundary(v); }
 
   // a cut edge at v other than `not_this`, as a halfedge pointing into v
   halfedge_descriptor cut_halfedge_into(vertex_descriptor v, halfedge_descriptor not_this) const
@@ -748,7 +797,7 @@ private:
   {
     std::vector<vertex_descriptor> leaves;
     for(vertex_descriptor v : vertices(tm_))
-      if(cut_degree_[vi(v)] == 1 && angles_.curvature(vi(v)) < corner_curvature()) leaves.push_back(v);
+      if(is_leaf_of_cut(v) && curvature(v) < corner_curvature()) leaves.push_back(v);
     for(vertex_descriptor w : leaves)
     {
       // past a sharp corner: walk in through at most two vertices of degree 2
@@ -759,7 +808,7 @@ private:
         path.push_back(h);
         const vertex_descriptor u = source(h, tm_);
         // (u keeps a cut edge, so K never becomes empty)
-        if(angles_.curvature(vi(u)) >= sharp_corner_curvature() && !is_source_vertex(u) && cut_degree_[vi(u)] >= 2)
+        if(curvature(u) >= sharp_corner_curvature() && !is_source_vertex(u) && cut_degree_[vi(u)] >= 2)
         {
           for(halfedge_descriptor p : path) remove_cut(edge(p, tm_));
           ++st_.number_of_corner_moves;
@@ -783,10 +832,10 @@ private:
   {
     std::vector<vertex_descriptor> corners;
     for(vertex_descriptor v : vertices(tm_))
-      if(cut_degree_[vi(v)] == 0 && !is_source_vertex(v) && angles_.curvature(vi(v)) >= corner_curvature())
+      if(cut_degree_[vi(v)] == 0 && !is_source_vertex(v) && curvature(v) >= corner_curvature())
         corners.push_back(v);
     std::stable_sort(corners.begin(), corners.end(), [&](vertex_descriptor a, vertex_descriptor b) {
-      return angles_.curvature(vi(a)) > angles_.curvature(vi(b));
+      return curvature(a) > curvature(b);
     });
     Short_path_search search(*this);
     for(vertex_descriptor c : corners)
@@ -839,7 +888,7 @@ private:
         const vertex_descriptor u = vertex_of[queue.top().second];
         queue.pop();
         if(d > reach[b.vi(u)]) continue;
-        if(b.cut_degree_[b.vi(u)] > 0) { found = u; break; }
+        if(b.cut_degree_[b.vi(u)] > 0 || b.on_boundary(u)) { found = u; break; }
         if(hops[b.vi(u)] == maximum_hops) continue;
         for(halfedge_descriptor h : CGAL::halfedges_around_target(u, b.tm_))
         {
@@ -872,37 +921,44 @@ private:
     st_.number_of_cut_edges = r_.cut_edges.size();
   }
 
-  // Step 4, always: K is connected with cycle rank 2g, the cut surface is
-  // connected with Euler characteristic 1 (so a disk), the source is off K.
+  // Step 4, always: K ∪ ∂M (K on a closed mesh) is connected with cycle rank
+  // 2g + b, the cut surface is connected with Euler characteristic 1 (so a
+  // disk), the source is off K.
   void check_disk()
   {
-    std::size_t split_vertices = 0;
+    std::size_t split_vertices = 0; // vertex copies in the cut surface beyond one per vertex
+    std::size_t graph_vertices = 0, graph_edges = st_.number_of_cut_edges;
     for(vertex_descriptor v : vertices(tm_))
     {
       const std::size_t k = cut_degree_[vi(v)];
       if(k > 0) ++st_.number_of_cut_vertices;
-      if(k == 1) ++st_.number_of_cut_leaves;
-      if(k > 1) split_vertices += k - 1;
+      if(is_leaf_of_cut(v)) ++st_.number_of_cut_leaves;
+      // k cut edges split an inner vertex into k sectors, a border vertex into k + 1
+      split_vertices += on_boundary(v) ? k : (k > 0 ? k - 1 : 0);
+      graph_vertices += (k > 0 || on_boundary(v));
     }
     Union_find kuf(nv_);
     for(edge_descriptor e : r_.cut_edges) kuf.unite(vi(source(e, tm_)), vi(target(e, tm_)));
-    const std::size_t k_components = kuf.number_of_sets() - (nv_ - st_.number_of_cut_vertices);
-    st_.cut_cycle_rank = st_.number_of_cut_edges + k_components - st_.number_of_cut_vertices;
+    for(halfedge_descriptor h : halfedges(tm_))
+      if(is_border(h, tm_)) { kuf.unite(vi(source(h, tm_)), vi(target(h, tm_))); ++graph_edges; }
+    const std::size_t k_components = kuf.number_of_sets() - (nv_ - graph_vertices);
+    st_.cut_cycle_rank = graph_edges + k_components - graph_vertices;
     Union_find fuf(nf_);
     for(edge_descriptor e : edges(tm_))
-      if(!r_.is_cut_edge[ei(e)])
+      if(!r_.is_cut_edge[ei(e)] && !is_border(e, tm_))
       {
         const halfedge_descriptor h = halfedge(e, tm_);
         fuf.unite(fi(face(h, tm_)), fi(face(opposite(h, tm_), tm_)));
       }
     const long cut_chi = static_cast<long>(nv_ + split_vertices) -
                          static_cast<long>(ne_ + st_.number_of_cut_edges) + static_cast<long>(nf_);
+    const std::size_t rank = static_cast<std::size_t>(2 * st_.genus) + st_.number_of_boundary_loops;
+    const std::string graph = has_boundary() ? "K with the border" : "the cut graph";
     std::string why;
-    if(r_.cut_edges.empty()) why = "the cut graph is empty";
-    else if(k_components != 1) why = "the cut graph has " + std::to_string(k_components) + " components";
-    else if(st_.cut_cycle_rank != static_cast<std::size_t>(2 * st_.genus))
-      why = "the cut graph has cycle rank " + std::to_string(st_.cut_cycle_rank) + ", not 2g = " +
-            std::to_string(2 * st_.genus);
+    if(graph_edges == 0) why = "the cut graph is empty";
+    else if(k_components != 1) why = graph + " has " + std::to_string(k_components) + " components";
+    else if(st_.cut_cycle_rank != rank)
+      why = graph + " has cycle rank " + std::to_string(st_.cut_cycle_rank) + ", not 2g + b = " + std::to_string(rank);
     else if(fuf.number_of_sets() != 1)
       why = "cutting along K splits the surface into " + std::to_string(fuf.number_of_sets()) + " parts";
     else if(cut_chi != 1)
@@ -932,6 +988,8 @@ private:
   std::vector<edge_descriptor> edge_of_;
   std::vector<face_descriptor> face_of_;
   std::vector<char> is_seed_;
+  // the border's vertices
+  std::vector<char> boundary_vertex_;
   // step 1: edge lengths
   std::vector<double> length_;
   // step 2: areas, the dual graph (by position d in r_.dual_edges), curvature,

@@ -191,6 +191,7 @@ make_face_source(const TriangleMesh& tm,
   s.kind = Geodesic_source<TriangleMesh>::ON_EDGE;
   s.edge_halfedge = he;
   const halfedge_descriptor ho = opposite(he, tm);
+  if(is_border(ho, tm)) return s; // a point of the border
   s.faces.push_back(face(ho, tm));
   s.seeds.emplace_back(target(next(ho, tm), tm), dist_to(target(next(ho, tm), tm)));
   return s;

@@ -52,8 +52,9 @@ private:
 };
 
 // Per face of M (by index) and edge k (corner k to k+1): the face across it and
-// that edge's index there.
+// that edge's index there; `no_face_across` (and -1) on the border.
 typedef std::vector<std::array<std::pair<std::size_t, int>, 3> > Faces_across;
+constexpr std::size_t no_face_across = std::size_t(-1);
 template <class TriangleMesh, class FaceIndexMap>
 Faces_across faces_across(const TriangleMesh& tm, FaceIndexMap fim)
 {
@@ -64,6 +65,11 @@ Faces_across faces_across(const TriangleMesh& tm, FaceIndexMap fim)
     for(int k = 0; k < 3; ++k, h = next(h, tm))
     {
       const auto o = opposite(h, tm);
+      if(is_border(o, tm))
+      {
+        across[get(fim, f)][k] = {no_face_across, -1};
+        continue;
+      }
       const auto g = face(o, tm);
       int kg = 0;
       for(auto x = halfedge(g, tm); x != o; x = next(x, tm)) ++kg;
