@@ -17,6 +17,8 @@
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 
+#include <CGAL/boost/graph/Euler_operations.h>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -705,5 +707,130 @@ TEST_CASE("a copy is split at a kink between its corners' fronts", "[ridge_curve
     const auto [out, split] = run({{left, left_too, left}}); // two fronts, 5 degrees apart: no kink
     CHECK(split == 0);
     CHECK(out.fields.size() == 1);
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Surfaces with a border (user manual, "Surfaces with a Border").
+
+// `name` with the faces within `radius` (times the bounding box diagonal) of
+// vertex `centre` removed: one more border loop.
+Mesh with_hole(const std::string& name, std::size_t centre, double radius)
+{
+  Mesh m = load(name);
+  const Point_3 c = m.point(vertex_descriptor(static_cast<Mesh::size_type>(centre)));
+  const double r = radius * bbox_diagonal(m);
+  std::vector<face_descriptor> doomed;
+  for(face_descriptor f : m.faces())
+  {
+    double nearest = std::numeric_limits<double>::infinity();
+    for(vertex_descriptor v : CGAL::vertices_around_face(m.halfedge(f), m))
+      nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(m.point(v), c)));
+    if(nearest <= r) doomed.push_back(f);
+  }
+  for(face_descriptor f : doomed) CGAL::Euler::remove_face(m.halfedge(f), m);
+  m.collect_garbage();
+  return m;
+}
+
+// The ridge with the border, from the polylines alone: each border loop one
+// node, joined to the ridge nodes that lie on it (by their Face_location);
+// components and cycle rank, the loops counted as the cycles they are.
+std::pair<std::size_t, std::size_t> ridge_with_border_topology(const Mesh& m,
+                                                                const std::vector<std::vector<Ridge_point> >& polylines)
+{
+  std::vector<std::size_t> parent(m.number_of_vertices());
+  for(std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  std::function<std::size_t(std::size_t)> find = [&](std::size_t x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
+  std::vector<char> on_border(m.number_of_vertices(), 0);
+  for(auto h : m.halfedges())
+    if(m.is_border(h))
+    {
+      on_border[m.source(h)] = on_border[m.target(h)] = 1;
+      parent[find(m.source(h))] = find(m.target(h));
+    }
+  std::map<std::size_t, std::size_t> loop; // root vertex -> loop index
+  for(std::size_t v = 0; v < on_border.size(); ++v) if(on_border[v]) loop.emplace(find(v), loop.size());
+  // the loop a ridge point lies on, or none
+  auto loop_of = [&](const Ridge_point& p) -> std::size_t {
+    auto h = m.halfedge(face_descriptor(static_cast<Mesh::size_type>(p.face)));
+    std::array<Mesh::Halfedge_index, 3> hs = {{h, m.next(h), m.next(m.next(h))}};
+    for(int k = 0; k < 3; ++k)
+    {
+      const bool at_vertex = p.barycentric[k] == 1;
+      const bool on_edge = p.barycentric[(k + 2) % 3] == 0 && m.is_border(m.opposite(hs[k]));
+      if((at_vertex && on_border[m.source(hs[k])]) || on_edge) return loop.at(find(m.source(hs[k])));
+    }
+    return std::size_t(-1);
+  };
+  // nodes: the loops, then the ridge points (keyed as in `ridge_topology`)
+  std::map<std::tuple<std::size_t, double, double, double, double, double, double>, std::size_t> id;
+  std::vector<std::pair<std::size_t, std::size_t> > edges;
+  auto node = [&](const Ridge_point& p) {
+    const auto [it, added] = id.emplace(std::make_tuple(p.face, p.barycentric[0], p.barycentric[1], p.barycentric[2],
+                                                        p.point.x(), p.point.y(), p.point.z()),
+                                        loop.size() + id.size());
+    if(added && loop_of(p) != std::size_t(-1)) edges.emplace_back(it->second, loop_of(p));
+    return it->second;
+  };
+  for(const auto& pl : polylines)
+    for(std::size_t i = 0; i + 1 < pl.size(); ++i)
+    {
+      const std::size_t a = node(pl[i]), b = node(pl[i + 1]);
+      if(a != b) edges.emplace_back(a, b);
+    }
+  const std::size_t nodes = loop.size() + id.size();
+  std::vector<std::size_t> up(nodes);
+  for(std::size_t i = 0; i < nodes; ++i) up[i] = i;
+  std::function<std::size_t(std::size_t)> root = [&](std::size_t x) { return up[x] == x ? x : up[x] = root(up[x]); };
+  std::size_t joins = 0;
+  for(const auto& [a, b] : edges) if(root(a) != root(b)) { up[root(a)] = root(b); ++joins; }
+  const std::size_t components = nodes - joins;
+  return {components, edges.size() + components - nodes + loop.size()};
+}
+
+TEST_CASE("surfaces with a border: the ridge with the border is connected, with cycle rank 2g + b", "[ridge_curve][border]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  struct Case { std::string name; std::size_t centre; double radius; int genus; };
+  for(const Case& c : {Case{"bunny_1k.off", 300, 0.02, 0}, Case{"torus_1k.off", 10, 0.08, 1}, Case{"eight.off", 100, 0.05, 2}})
+  {
+    const Mesh m = with_hole(c.name, c.centre, c.radius);
+    REQUIRE(CGAL::is_valid_polygon_mesh(m));
+    // sources: an inner vertex, a border vertex, the middle of a border edge
+    Mesh::Halfedge_index border;
+    for(auto h : m.halfedges()) if(m.is_border(h)) { border = m.opposite(h); break; }
+    const face_descriptor bf = m.face(border);
+    std::array<double, 3> mid = {{0, 0, 0}};
+    int k = 0;
+    for(auto h = m.halfedge(bf); h != border; h = m.next(h)) ++k;
+    mid[k] = mid[(k + 1) % 3] = 0.5;
+    for(const std::string solver : {"exact", "fmm"})
+      for(int s = 0; s < 3; ++s)
+      {
+        const std::string what = c.name + " with a hole, " + solver + ", source " +
+                                 (s == 0 ? "vertex 0" : s == 1 ? "a border vertex" : "a border edge's middle");
+        INFO(what);
+        auto run = [&](const auto& solver_model) {
+          const auto np = p::solver(solver_model);
+          if(s == 0) return Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0), np);
+          if(s == 1) return Geodesic_ridge::compute_ridge_curve(m, m.source(border), np);
+          return Geodesic_ridge::compute_ridge_curve(m, Face_location(bf, mid), np);
+        };
+        const Result rc = solver == "exact" ? run(Geodesic_ridge::Exact_solver()) : run(Geodesic_ridge::Fast_marching_solver());
+        const auto& rs = rc.rough_cut_locus.statistics;
+        CHECK(rs.genus == c.genus);
+        CHECK(rs.number_of_boundary_loops == 1);
+        CHECK(rs.cut_cycle_rank == static_cast<std::size_t>(2 * c.genus + 1));
+        const auto [components, cycles] = ridge_with_border_topology(m, rc.polylines);
+        CHECK(components == 1);
+        CHECK(cycles == static_cast<std::size_t>(2 * c.genus + 1));
+        CHECK(rc.statistics.ridge.components == 1);
+        CHECK(rc.statistics.ridge.cycles == static_cast<std::size_t>(2 * c.genus + 1));
+        CHECK(rc.statistics.extended_surface.refused_faces + rc.statistics.extended_surface.refused_gluings == 0);
+        CHECK(max_location_error(m, rc.polylines) <= 1e-9 * bbox_diagonal(m));
+        std::cout << "[ridge_curve] " << what << ": " << rc.statistics.ridge.ridge_segments << " segments, E/F "
+                  << double(rc.statistics.extended_surface.number_of_faces) / m.number_of_faces() << "\n";
+      }
   }
 }
