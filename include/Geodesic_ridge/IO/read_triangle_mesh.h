@@ -414,7 +414,8 @@ std::size_t count_repeated_positions(const std::vector<Point>& points)
 // Validates the soup, its messages in the file's indices. A mesh refused for a
 // rule the repair does not fix as such (a boundary, several components) may
 // still be one the repair fixes when vertices coincide (a seam in the file):
-// without the repair, that is said, as a `Repairable_mesh_error`.
+// without the repair, that is said, as a `Repairable_mesh_error`. After the
+// repair, what is left is no longer repairable.
 template <class Point, class FilePoint>
 void validate(const Repaired_soup<Point>& soup, const std::vector<FilePoint>& file_points, bool repaired)
 {
@@ -424,8 +425,10 @@ void validate(const Repaired_soup<Point>& soup, const std::vector<FilePoint>& fi
   {
     validator.run();
   }
-  catch(const Repairable_mesh_error&)
+  catch(const Repairable_mesh_error& e)
   {
+    if(repaired)
+      throw Invalid_mesh_error(std::string(e.what()) + " (left by the repair)");
     throw;
   }
   catch(const Invalid_mesh_error& e)
