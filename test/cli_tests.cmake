@@ -142,3 +142,16 @@ add_test(NAME cli.repair.ply_triangle_strips
          COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DDIRTY=${B}/tetrahedron_strips.ply -DDIRTY_SOURCE=0
                  -DCLEAN=${B}/tetrahedron_strips_as_faces.off -DCLEAN_SOURCE=0 -DCLEAN_EXTRA=--repair
                  -DOUT=${OUTDIR}/repair -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_repair.cmake)
+# a face reversed: the repair reverses it back (the fewer faces), as the clean file has it
+add_test(NAME cli.repair.orientation
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DDIRTY=${B}/octahedron_flipped.off -DDIRTY_SOURCE=4
+                 -DCLEAN=${B}/octahedron.off -DCLEAN_SOURCE=4 "-DNOTES=repair: 1 faces reoriented"
+                 -DREORDERED_FACES=ON -DQUERIES=${B}/queries_octahedron_points.txt
+                 -DOUT=${OUTDIR}/repair -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_repair.cmake)
+# a degenerate face (a cap closing a T-junction): removed, the mesh then accepted
+add_test(NAME cli.repair.degenerate_face
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DDIRTY=${B}/octahedron_cap.off -DDIRTY_SOURCE=4
+                 -DCLEAN=${B}/octahedron_cap.off -DCLEAN_SOURCE=4 -DCLEAN_EXTRA=--repair
+                 "-DNOTES=repair: 1 degenerate faces removed" -DOUT=${OUTDIR}/repair_degenerate
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_repair.cmake)
+cli_failure(degenerate_face       "face 9 is degenerate .*\\(use --repair\\)$" ${CLI} ${B}/octahedron_cap.off --source-vertex 4)

@@ -3,12 +3,16 @@
 # same surface whose file indices are the ones the dirty file's must map to,
 # and checks that every output that speaks in file indices is the same: the
 # ridge locations (FACE and one coordinate per vertex of the file face) and
-# the distances at queries given as FACE X Y Z or as barycentric coordinates.
+# the distances at queries given as FACE X Y Z or as barycentric coordinates;
+# and the ridge itself. With -DREORDERED_FACES=ON (the dirty file lists some
+# face's vertices in another order, e.g. reversed) the ridge locations, whose
+# coordinates follow that order, are not compared.
 # Also checks that the stats give the source as the dirty file's vertex and say
 # that the mesh was repaired, and that stderr says what the repair did (every
 # regular expression of NOTES matches it).
 #   cmake -DCLI=prog -DDIRTY=mesh -DDIRTY_SOURCE=v -DCLEAN=mesh -DCLEAN_SOURCE=v [-DCLEAN_EXTRA=args]
-#         [-DQUERIES=file] [-DBARYCENTRIC=file] [-DNOTES="re;..."] -DOUT=dir -P expect_repair.cmake
+#         [-DQUERIES=file] [-DBARYCENTRIC=file] [-DNOTES="re;..."] [-DREORDERED_FACES=ON] -DOUT=dir
+#         -P expect_repair.cmake
 file(MAKE_DIRECTORY ${OUT})
 get_filename_component(name ${DIRTY} NAME_WE)
 set(prefix ${OUT}/${name})
@@ -20,7 +24,7 @@ function(run tag mesh source)
     list(APPEND queries --query ${QUERIES} --query-out ${prefix}_${tag}_points.txt)
   endif()
   execute_process(COMMAND ${CLI} ${mesh} --source-vertex ${source} ${ARGN} --ridge-locations ${prefix}_${tag}.txt
-                          --stats ${prefix}_${tag}.json ${queries}
+                          --ridge ${prefix}_${tag}_ridge.txt --stats ${prefix}_${tag}.json ${queries}
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${mesh}: exit ${rc}\n${out}\n${err}")
@@ -44,7 +48,10 @@ foreach(re IN LISTS NOTES)
   endif()
 endforeach()
 
-set(outputs .txt)
+set(outputs _ridge.txt)
+if(NOT REORDERED_FACES)
+  list(APPEND outputs .txt)
+endif()
 if(QUERIES)
   list(APPEND outputs _points.txt)
 endif()
