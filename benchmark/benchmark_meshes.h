@@ -32,14 +32,15 @@ inline std::vector<std::string> benchmark_meshes(std::vector<std::string> files)
 /// The pipeline's knobs, settable from a benchmark's command line, so that
 /// schedules can be compared on the same meshes:
 ///   --initial-rings K --extension-step K --maximum-rings K --maximum-solves K
-///   --guided 0|1 --leaf-extension F --spur-angle DEG --tree-from-solver 0|1 --predicted 0|1
+///   --spur-angle DEG --tree-from-solver 0|1 --predicted 0|1
 ///   --leaf-curvature DEG --branch-curvature DEG --kink-angle DEG
 struct Pipeline_options
 {
-  int initial_rings = 3, extension_step = 4, maximum_rings = Geodesic_ridge::default_maximum_rings,
+  int initial_rings = Geodesic_ridge::default_initial_rings, extension_step = Geodesic_ridge::default_extension_step,
+      maximum_rings = Geodesic_ridge::default_maximum_rings,
       maximum_solves = Geodesic_ridge::default_maximum_solves;
-  bool guided = false, tree_from_solver = false, predicted = true;
-  double leaf_extension = Geodesic_ridge::default_leaf_extension, spur_angle = 15,
+  bool tree_from_solver = false, predicted = true;
+  double spur_angle = Geodesic_ridge::default_minimum_spur_angle,
          leaf_curvature = Geodesic_ridge::default_leaf_curvature, kink_angle = Geodesic_ridge::default_kink_angle,
          branch_curvature = Geodesic_ridge::default_branch_curvature;
 
@@ -52,11 +53,9 @@ struct Pipeline_options
     else if(a == "--extension-step") extension_step = std::stoi(argv[++i]);
     else if(a == "--maximum-rings") maximum_rings = std::stoi(argv[++i]);
     else if(a == "--maximum-solves") maximum_solves = std::stoi(argv[++i]);
-    else if(a == "--guided") guided = std::stoi(argv[++i]) != 0;
     else if(a == "--leaf-curvature") leaf_curvature = std::stod(argv[++i]);
     else if(a == "--predicted") predicted = std::stoi(argv[++i]) != 0;
     else if(a == "--tree-from-solver") tree_from_solver = std::stoi(argv[++i]) != 0;
-    else if(a == "--leaf-extension") leaf_extension = std::stod(argv[++i]);
     else if(a == "--spur-angle") spur_angle = std::stod(argv[++i]);
     else if(a == "--kink-angle") kink_angle = std::stod(argv[++i]);
     else if(a == "--branch-curvature") branch_curvature = std::stod(argv[++i]);
@@ -68,8 +67,9 @@ struct Pipeline_options
   {
     namespace p = Geodesic_ridge::parameters;
     return p::tolerance(tolerance, p::initial_rings(initial_rings, p::extension_step(extension_step,
-           p::maximum_rings(maximum_rings, p::maximum_solves(maximum_solves, p::guided_extension(guided,
-           p::leaf_extension(leaf_extension, p::minimum_spur_angle(spur_angle, p::tree_from_solver(tree_from_solver, p::predicted_extension(predicted, p::leaf_curvature(leaf_curvature, p::branch_curvature(branch_curvature, p::kink_angle(kink_angle)))))))))))));
+           p::maximum_rings(maximum_rings, p::maximum_solves(maximum_solves,
+           p::minimum_spur_angle(spur_angle, p::tree_from_solver(tree_from_solver, p::predicted_extension(predicted,
+           p::leaf_curvature(leaf_curvature, p::branch_curvature(branch_curvature, p::kink_angle(kink_angle)))))))))));
   }
 };
 

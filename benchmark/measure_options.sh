@@ -12,11 +12,9 @@ cd "$(dirname "$0")/.."
 build=${1:-build}; sources=${2:-4}
 variants=(
   "defaults|"
-  "guided_extension on|--guided 1"
   "predicted_extension off|--predicted 0"
   "tree_from_solver on|--tree-from-solver 1"
-  "leaf_curvature off (leaf_extension stays 1)|--leaf-curvature 0"
-  "leaf_curvature off, leaf_extension 0.3|--leaf-curvature 0 --leaf-extension 0.3"
+  "leaf_curvature off|--leaf-curvature 0"
   "branch_curvature off|--branch-curvature 0"
   "kink_angle off|--kink-angle 0"
   "minimum_spur_angle off|--spur-angle 0"

@@ -42,6 +42,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -441,120 +442,64 @@ void write_isolines(const std::string& filename, const Lines& lines)
   Geodesic_ridge::IO::write_polylines(filename, polylines);
 }
 
-Json rough_cut_json(const Geodesic_ridge::Rough_cut_locus_statistics& s)
-{
-  return {{"dual_edges", s.number_of_dual_edges},
-          {"core_dual_edges", s.number_of_core_dual_edges},
-          {"kept_dual_edges", s.number_of_kept_dual_edges},
-          {"false_branch_dual_edges", s.number_of_curvature_pruned_dual_edges},
-          {"kept_dual_leaves", s.number_of_kept_dual_leaves},
-          {"leaf_extension_dual_edges", s.number_of_leaf_extension_edges},
-          {"extended_dual_leaves", s.number_of_extended_dual_leaves},
-          {"cut_edges", s.number_of_cut_edges},
-          {"cut_vertices", s.number_of_cut_vertices},
-          {"cut_leaves", s.number_of_cut_leaves},
-          {"cut_cycle_rank", s.cut_cycle_rank},
-          {"closing_rungs", s.number_of_closing_rungs},
-          {"teeth_pruned", s.number_of_teeth_pruned},
-          {"corner_moves", s.number_of_corner_moves},
-          {"fallback_single_rung", s.fallback_single_rung}};
-}
+// The statistics as JSON objects, one key per member, named as the member (the
+// reference manual documents each), through nlohmann-json's field macros.
+#define GEODESIC_RIDGE_JSON_FIELDS(Type, ...)                                                           \
+  inline void to_json(Json& nlohmann_json_j, const Type& nlohmann_json_t)                               \
+  {                                                                                                     \
+    NLOHMANN_JSON_EXPAND(NLOHMANN_JSON_PASTE(NLOHMANN_JSON_TO, __VA_ARGS__))                            \
+  }
+} // namespace
 
-Json extended_surface_json(const Geodesic_ridge::Geodesic_ridge_statistics& g, std::size_t mesh_faces)
-{
-  const auto& x = g.extended_surface;
-  return {{"faces", x.number_of_faces},
-          {"vertices", x.number_of_vertices},
-          {"faces_over_mesh_faces", double(x.number_of_faces) / mesh_faces},
-          {"rings", x.rings},
-          {"solves", g.solves},
-          {"predicted_passes", g.predicted_passes},
-          {"outer_copies_still_winning", g.outer_copies_winning},
-          {"ring_cap_hit", g.ring_cap_hit},
-          {"closures", x.number_of_closures},
-          {"leaf_vertices", x.number_of_leaf_vertices},
-          {"winding_bound_hits", x.winding_bound_hits},
-          {"refused_faces", x.refused_faces},
-          {"refused_gluings", x.refused_gluings},
-          {"open_fans", x.open_fans}};
-}
+// (found by argument-dependent lookup: in the statistics' namespace)
+namespace Geodesic_ridge {
+GEODESIC_RIDGE_JSON_FIELDS(Rough_cut_locus_statistics, genus, number_of_vertices, number_of_edges, number_of_faces,
+                           number_of_dual_edges, number_of_core_dual_edges, number_of_kept_dual_edges,
+                           number_of_kept_dual_leaves, number_of_extended_dual_leaves, number_of_leaf_extension_edges,
+                           number_of_cut_edges, number_of_cut_vertices, number_of_cut_leaves, cut_cycle_rank,
+                           number_of_closing_rungs, number_of_teeth_pruned, number_of_curvature_pruned_dual_edges,
+                           number_of_corner_moves, fallback_single_rung)
+GEODESIC_RIDGE_JSON_FIELDS(Extended_surface_statistics, rings, number_of_faces, number_of_vertices, faces_per_ring,
+                           number_of_closures, winding_bound_hits, refused_faces, refused_gluings, open_fans,
+                           number_of_leaf_vertices)
+GEODESIC_RIDGE_JSON_FIELDS(Ridge_curve_statistics, ridge_segments, junctions, free_ends, components, cycles,
+                           total_length, faces_with_several_copies, surviving_copies, split_copies, envelope_segments,
+                           edge_segments, regions_before_merge, merged_segments, rejoined_segments, dropped_components,
+                           pruned_spur_segments, pruned_flat_end_segments)
+GEODESIC_RIDGE_JSON_FIELDS(Cone_ridge_statistics, tolerance, points_moved, junctions_moved, points_kept, points_added,
+                           largest_move)
+GEODESIC_RIDGE_JSON_FIELDS(Geodesic_ridge_statistics, solver, tolerance, tree_from_solver, solves, predicted_passes,
+                           outer_copies_winning, ring_cap_hit, rough_cut_locus, extended_surface, ridge, cone_ridge)
+GEODESIC_RIDGE_JSON_FIELDS(Refined_mesh_statistics, vertices, faces, split_faces, centre_vertices, ridge_edges,
+                           unmatched_ridge_segments, largest_disagreement)
+GEODESIC_RIDGE_JSON_FIELDS(Repair_statistics, triangulated_polygons, non_planar_polygons, triangles_from_polygons,
+                           repaired, merged_vertices, removed_invalid_faces, removed_duplicate_faces,
+                           split_non_manifold_edges, split_non_manifold_vertices, added_vertex_copies,
+                           removed_degenerate_faces, reoriented_faces, removed_isolated_vertices)
+} // namespace Geodesic_ridge
 
-Json ridge_json(const Ridge& rc)
-{
-  const auto& q = rc.statistics.ridge;
-  return {{"polylines", rc.polylines.size()},
-          {"segments", q.ridge_segments},
-          {"junctions", q.junctions},
-          {"free_ends", q.free_ends},
-          {"components", q.components},
-          {"cycles", q.cycles},
-          {"total_length", q.total_length},
-          {"faces_with_several_copies", q.faces_with_several_copies},
-          {"surviving_copies", q.surviving_copies},
-          {"split_copies", q.split_copies},
-          {"envelope_segments", q.envelope_segments},
-          {"edge_segments", q.edge_segments},
-          {"regions_before_merge", q.regions_before_merge},
-          {"merged_segments", q.merged_segments},
-          {"pruned_spur_segments", q.pruned_spur_segments},
-          {"pruned_flat_end_segments", q.pruned_flat_end_segments},
-          {"dropped_components", q.dropped_components}};
-}
-
-// The file as read, and what the triangulation and the repair changed.
-Json input_json(const File_map& map)
-{
-  const auto& st = map.statistics();
-  Json j = {{"file_vertices", map.number_of_file_vertices()},
-            {"file_faces", map.number_of_file_faces()},
-            {"triangulated_polygons", st.triangulated_polygons},
-            {"non_planar_polygons", st.non_planar_polygons},
-            {"triangles_from_polygons", st.triangles_from_polygons},
-            {"repaired", st.repaired}};
-  if(st.repaired)
-    j["repair"] = {{"merged_vertices", st.merged_vertices},
-                   {"removed_invalid_faces", st.removed_invalid_faces},
-                   {"removed_duplicate_faces", st.removed_duplicate_faces},
-                   {"split_non_manifold_edges", st.split_non_manifold_edges},
-                   {"split_non_manifold_vertices", st.split_non_manifold_vertices},
-                   {"added_vertex_copies", st.added_vertex_copies},
-                   {"removed_degenerate_faces", st.removed_degenerate_faces},
-                   {"reoriented_faces", st.reoriented_faces},
-                   {"removed_isolated_vertices", st.removed_isolated_vertices}};
-  return j;
-}
+namespace {
 
 void write_stats(const std::string& filename, const Options& o, const Ridge& rc, const Mesh& mesh,
                  const File_map& map, double read_seconds, const Geodesic_ridge::Refined_mesh_statistics* refined)
 {
   const auto& r = rc.rough_cut_locus;
   const auto& s = r.statistics;
-  const auto& g = rc.statistics;
   // the source in the file's terms: the file face and one coordinate per vertex of it
   const auto file_source = map.file_location(r.source.location, mesh);
   const Json source = o.source_vertex ? Json{{"vertex", *o.source_vertex}}
                                       : Json{{"face", file_source.face}, {"barycentric", file_source.coordinates}};
-  Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source}, {"tolerance", o.tolerance}, {"solver", g.solver},
-                            {"leaf_curvature_degrees", Geodesic_ridge::default_leaf_curvature},
-                            {"branch_curvature_degrees", Geodesic_ridge::default_branch_curvature},
-                            {"tree_from_solver", g.tree_from_solver}, {"repair", o.repair}}},
-            {"input", input_json(map)},
+  Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source}, {"tolerance", o.tolerance}, {"solver", o.solver},
+                            {"field", o.field == Geodesic_ridge::Field::cone ? "cone" : "linear"},
+                            {"repair", o.repair}}},
+            {"input", {{"file_vertices", map.number_of_file_vertices()},
+                       {"file_faces", map.number_of_file_faces()},
+                       {"triangulation_and_repair", map.statistics()}}},
             {"mesh", {{"vertices", s.number_of_vertices}, {"edges", s.number_of_edges},
                       {"faces", s.number_of_faces}, {"genus", s.genus}, {"total_area", r.total_area}}},
-            {"rough_cut_locus", rough_cut_json(s)},
-            {"extended_surface", extended_surface_json(g, s.number_of_faces)},
-            {"ridge", ridge_json(rc)}};
-  const auto& c = g.cone_ridge;
-  if(!rc.cone_polylines.empty())
-    j["cone_ridge"] = {{"tolerance", c.tolerance}, {"points_moved", c.points_moved},
-                       {"junctions_moved", c.junctions_moved}, {"points_kept", c.points_kept},
-                       {"points_added", c.points_added}, {"largest_move_mean_edges", c.largest_move}};
-  if(refined)
-    j["refined_mesh"] = {{"vertices", refined->vertices}, {"faces", refined->faces},
-                         {"split_faces", refined->split_faces}, {"centre_vertices", refined->centre_vertices},
-                         {"ridge_edges", refined->ridge_edges},
-                         {"unmatched_ridge_segments", refined->unmatched_ridge_segments},
-                         {"largest_disagreement", refined->largest_disagreement}};
+            {"ridge", {{"polylines", rc.polylines.size()}, {"cone_polylines", rc.cone_polylines.size()}}},
+            {"statistics", rc.statistics}};
+  if(refined) j["refined_mesh"] = *refined;
   // every step the pipeline timed, stage 1's split into its own steps
   Json timings = {{"read_and_validate", read_seconds}};
   for(const auto& [step, seconds] : rc.timings.steps()) timings[step] = seconds;
@@ -750,11 +695,7 @@ void contour(const Options& o, const Mesh& contoured, const VertexDistance& vert
 std::vector<std::vector<Point_3> > points_of(const Ridge_polylines& ridge)
 {
   std::vector<std::vector<Point_3> > polylines;
-  for(const auto& pl : ridge)
-  {
-    polylines.emplace_back();
-    for(const auto& p : pl) polylines.back().push_back(p.point);
-  }
+  Geodesic_ridge::ridge_polyline_points(ridge, std::back_inserter(polylines));
   return polylines;
 }
 

@@ -696,7 +696,7 @@ TEST_CASE("cone ridge: the cones agree on it on real meshes", "[distance_field]"
         for(int k = 0; k < 8 && same_cones; ++k)
         {
           const double phi = k * CGAL_PI / 4, eps = 1e-6 * h;
-          const std::array<double, 2> y = {{x[0] + eps * std::cos(phi), x[1] + eps * std::sin(phi)}};
+          const auto y = x + eps * Geodesic_ridge::internal::Face_plane::Vector_2(std::cos(phi), std::sin(phi));
           for(int j = 0; j < 2; ++j)
             same_cones = same_cones && field.apex(values[j].second, x) == field.apex(values[j].second, y);
         }

@@ -421,51 +421,6 @@ TEST_CASE("cutting along K gives one disk with the source inside, for every tole
   }
 }
 
-// Leaf extension: every leaf of the kept dual structure goes on along one
-// pruned path of significance in [f t A, t A); the cut is still one disk, with
-// no more leaves than the kept structure has.
-TEST_CASE("leaf extension goes on along one pruned path per kept leaf", "[rough_cut_locus]")
-{
-  for(const std::string name : {"bunny_1k.off", "torus_1k.off", "eight.off"})
-  {
-    const Mesh m = load(name);
-    const int genus = name == "bunny_1k.off" ? 0 : (name == "torus_1k.off" ? 1 : 2);
-    for(double t : {0.005, 0.025, 0.1})
-    {
-      INFO(name << " tolerance " << t);
-      namespace p = Geodesic_ridge::parameters;
-      const RCL plain =
-          Geodesic_ridge::compute_rough_cut_locus(m, vertex_descriptor(0), p::tolerance(t, p::leaf_curvature(0)));
-      const RCL r = Geodesic_ridge::compute_rough_cut_locus(
-          m, vertex_descriptor(0), p::tolerance(t, p::leaf_extension(0.1, p::leaf_curvature(0))));
-      check_rough_cut_locus(m, r, t, genus);
-      REQUIRE(plain.leaf_extension_edges.empty());
-      REQUIRE(r.kept_dual_edges == plain.kept_dual_edges);
-      for(edge_descriptor e : r.leaf_extension_edges)
-      {
-        REQUIRE(r.edge_role[e.idx()] == Geodesic_ridge::Edge_role::dual_leaf_extension);
-        REQUIRE(r.significance[e.idx()] < t * r.total_area);
-        REQUIRE(r.significance[e.idx()] >= 0.1 * t * r.total_area);
-      }
-      // one path per kept leaf, no new branch: a face on an extension path has
-      // at most two of its edges, and where a path starts (a kept leaf) one
-      std::vector<int> kept_deg(m.number_of_faces(), 0), ext_deg(m.number_of_faces(), 0);
-      for(edge_descriptor e : r.kept_dual_edges)
-        for(auto h : {m.halfedge(e), m.opposite(m.halfedge(e))}) ++kept_deg[m.face(h).idx()];
-      for(edge_descriptor e : r.leaf_extension_edges)
-        for(auto h : {m.halfedge(e), m.opposite(m.halfedge(e))}) ++ext_deg[m.face(h).idx()];
-      for(std::size_t f = 0; f < m.number_of_faces(); ++f)
-      {
-        REQUIRE(ext_deg[f] <= 2);
-        if(ext_deg[f] > 0 && kept_deg[f] > 0) REQUIRE((kept_deg[f] == 1 && ext_deg[f] == 1));
-      }
-      std::cout << "[rough_cut_locus] " << name << " tolerance " << t << ": " << r.leaf_extension_edges.size()
-                << " leaf extension dual edges, K " << plain.cut_edges.size() << " -> " << r.cut_edges.size()
-                << " edges\n";
-    }
-  }
-}
-
 TEST_CASE("leaf curvature: the cut graph's leaves go on to the corners of convex polyhedra", "[rough_cut_locus]")
 {
   namespace p = Geodesic_ridge::parameters;

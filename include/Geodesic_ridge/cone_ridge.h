@@ -65,6 +65,8 @@ namespace internal {
 /// the order of a `Face_location`) to plane coordinates and back.
 struct Face_plane
 {
+  typedef CGAL::Epick::Point_2 Point_2;
+  typedef CGAL::Epick::Vector_2 Vector_2;
   double l = 1, x2 = 0, y2 = 1;
 
   Face_plane() = default;
@@ -81,18 +83,22 @@ struct Face_plane
     y2 = std::sqrt(CGAL::cross_product(e1, e2).squared_length()) / l;
   }
 
-  std::array<double, 2> point(const std::array<double, 3>& b) const { return {{b[1] * l + b[2] * x2, b[2] * y2}}; }
+  Point_2 point(const std::array<double, 3>& b) const { return Point_2(b[1] * l + b[2] * x2, b[2] * y2); }
 
   /// corner k (0, 1, 2)
-  std::array<double, 2> corner(int k) const
+  Point_2 corner(int k) const { return k == 0 ? Point_2(0, 0) : k == 1 ? Point_2(l, 0) : Point_2(x2, y2); }
+
+  std::array<double, 3> barycentric(const Point_2& x) const
   {
-    return k == 0 ? std::array<double, 2>{{0, 0}} : k == 1 ? std::array<double, 2>{{l, 0}} : std::array<double, 2>{{x2, y2}};
+    const double b2 = x.y() / y2, b1 = (x.x() - b2 * x2) / l;
+    return {{1 - b1 - b2, b1, b2}};
   }
 
-  std::array<double, 3> barycentric(const std::array<double, 2>& x) const
+  /// the barycentric coordinates of a direction (they sum to 0)
+  std::array<double, 3> barycentric(const Vector_2& d) const
   {
-    const double b2 = x[1] / y2, b1 = (x[0] - b2 * x2) / l;
-    return {{1 - b1 - b2, b1, b2}};
+    const double b2 = d.y() / y2, b1 = (d.x() - b2 * x2) / l;
+    return {{-b1 - b2, b1, b2}};
   }
 };
 
@@ -108,13 +114,13 @@ public:
   std::size_t number_of_copies() const { return count_ / samples().size(); }
 
   /// The distance by copy `c` at plane point `x`.
-  double value(std::size_t c, const std::array<double, 2>& x) const
+  double value(std::size_t c, const Face_plane::Point_2& x) const
   {
     return cone_value(cones_[c * samples().size() + nearest_sample(x)], x);
   }
 
   /// The copy lowest at `x` (the first of equals) and its distance.
-  std::pair<std::size_t, double> lowest(const std::array<double, 2>& x) const
+  std::pair<std::size_t, double> lowest(const Face_plane::Point_2& x) const
   {
     const std::size_t S = samples().size();
     std::pair<std::size_t, double> best(0, std::numeric_limits<double>::infinity());
@@ -127,7 +133,7 @@ public:
   }
 
   /// The apex (in the plane) of the cone that copy `c` uses at `x`.
-  std::array<double, 2> apex(std::size_t c, const std::array<double, 2>& x) const
+  Face_plane::Point_2 apex(std::size_t c, const Face_plane::Point_2& x) const
   {
     return plane_.point(cones_[c * samples().size() + nearest_sample(x)].apex);
   }
@@ -137,23 +143,21 @@ public:
 private:
   static const std::vector<std::array<double, 3> >& samples() { return Exact_solver::cone_samples(); }
 
-  std::size_t nearest_sample(const std::array<double, 2>& x) const
+  std::size_t nearest_sample(const Face_plane::Point_2& x) const
   {
     std::size_t nearest = 0;
     double nearest_d2 = std::numeric_limits<double>::infinity();
     for(std::size_t i = 0; i < samples().size(); ++i)
     {
-      const std::array<double, 2> s = plane_.point(samples()[i]);
-      const double d2 = (x[0] - s[0]) * (x[0] - s[0]) + (x[1] - s[1]) * (x[1] - s[1]);
+      const double d2 = CGAL::squared_distance(x, plane_.point(samples()[i]));
       if(d2 < nearest_d2) { nearest_d2 = d2; nearest = i; }
     }
     return nearest;
   }
 
-  double cone_value(const Face_cone& cone, const std::array<double, 2>& x) const
+  double cone_value(const Face_cone& cone, const Face_plane::Point_2& x) const
   {
-    const std::array<double, 2> a = plane_.point(cone.apex);
-    return std::hypot(x[0] - a[0], x[1] - a[1]) + cone.offset;
+    return std::sqrt(CGAL::squared_distance(x, plane_.point(cone.apex))) + cone.offset;
   }
 
   Face_plane plane_;
@@ -169,7 +173,8 @@ class Cone_ridge_tracer
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
-  typedef std::array<double, 2> P2;
+  typedef Face_plane::Point_2 Point_2;
+  typedef Face_plane::Vector_2 Vector_2;
   typedef std::array<double, 3> Bary;
   // the largest barycentric coordinate read as 0 (a few units of rounding)
   static constexpr double rounded_zero = 1e-13;
@@ -247,8 +252,8 @@ private:
     return Face_cone_field(plane_of(f), cones_[f].data(), cones_[f].size());
   }
 
-  // the plane point, in face f, of a 3D vector given in 3D (projected)
-  P2 direction_in_face(std::size_t f, const Point& from, const Point& to) const
+  // the plane vector, in face f, of a 3D vector given in 3D (projected)
+  Vector_2 direction_in_face(std::size_t f, const Point& from, const Point& to) const
   {
     typedef CGAL::Epick::Vector_3 Vector;
     const auto p = faces_.corner_points(f);
@@ -259,7 +264,7 @@ private:
     const Vector ex = e1 / std::sqrt(e1.squared_length());
     Vector ey = e2 - (e2 * ex) * ex;
     ey = ey / std::sqrt(ey.squared_length());
-    return {{t * ex, t * ey}};
+    return Vector_2(t * ex, t * ey);
   }
 
   Ridge_point<Point> make_point(const Ridge_point<Point>& like, std::size_t f, const Bary& b) const
@@ -283,9 +288,10 @@ private:
   // Root of value(a) - value(b) on x(s) = x0 + s d, s in [lo, hi], where a is
   // lowest at lo and b at hi; false if the sides do not give two copies or a
   // third copy is lower at the root.
-  bool bisect(const Face_cone_field& field, const P2& x0, const P2& d, double lo, double hi, P2& root) const
+  bool bisect(const Face_cone_field& field, const Point_2& x0, const Vector_2& d, double lo, double hi,
+              Point_2& root) const
   {
-    auto at = [&](double s) { return P2{{x0[0] + s * d[0], x0[1] + s * d[1]}}; };
+    auto at = [&](double s) { return x0 + s * d; };
     const std::size_t a = field.lowest(at(lo)).first, b = field.lowest(at(hi)).first;
     if(a == b) return false;
     auto g = [&](double s) { return field.value(a, at(s)) - field.value(b, at(s)); };
@@ -317,33 +323,29 @@ private:
     if(z >= 2) { ++st.points_kept; return p; }
     const Face_cone_field field = field_of(p.face);
     const Face_plane& plane = field.plane();
-    const P2 x0 = plane.point(p.barycentric);
+    const Point_2 x0 = plane.point(p.barycentric);
     const double reach = 0.5 * (std::min)(std::sqrt(CGAL::to_double(CGAL::squared_distance(p.point, prev))),
                                           std::sqrt(CGAL::to_double(CGAL::squared_distance(p.point, next))));
-    P2 d;
+    Vector_2 d;
     if(z == 1)
     {
       // along the edge the point lies on
       int k = 0;
       while(p.barycentric[k] != 0) ++k;
-      const P2 from = plane.corner((k + 1) % 3), to = plane.corner((k + 2) % 3);
-      d = {{to[0] - from[0], to[1] - from[1]}};
+      d = plane.corner((k + 2) % 3) - plane.corner((k + 1) % 3);
     }
     else
-    {
-      const P2 t = direction_in_face(p.face, prev, next);
-      d = {{-t[1], t[0]}};
-    }
-    const double n = std::hypot(d[0], d[1]);
+      d = direction_in_face(p.face, prev, next).perpendicular(CGAL::COUNTERCLOCKWISE);
+    const double n = std::sqrt(d.squared_length());
     if(!(n > 0)) { ++st.points_kept; return p; }
-    d = {{d[0] / n, d[1] / n}};
-    Bary w = barycentric_direction(plane, d);
+    d = d / n;
+    Bary w = plane.barycentric(d);
     for(int k = 0; k < 3; ++k)
       if(p.barycentric[k] == 0) w[k] = 0; // along its edge
     const Bary minus_w = {{-w[0], -w[1], -w[2]}};
     const double hi = (std::min)(reach, room(p.barycentric, w, 0.999)),
                  lo = -(std::min)(reach, room(p.barycentric, minus_w, 0.999));
-    P2 root;
+    Point_2 root;
     bool found = hi > 0 && lo < 0 && bisect(field, x0, d, lo, hi, root);
     if(!found)
     {
@@ -371,12 +373,6 @@ private:
     return q;
   }
 
-  static Bary barycentric_direction(const Face_plane& plane, const P2& d)
-  {
-    const Bary o = plane.barycentric({{0, 0}}), e = plane.barycentric(d);
-    return {{e[0] - o[0], e[1] - o[1], e[2] - o[2]}};
-  }
-
   // A junction inside a face where exactly three copies are lowest around it
   // moves to where their three cones agree; every other end stays.
   Ridge_point<Point> move_end(const Ridge_point<Point>& p, const Point& neighbour, Cone_ridge_statistics& st) const
@@ -393,48 +389,16 @@ private:
     if(zeros(p.barycentric) != 0) { ++st.points_kept; return p; }
     const Face_cone_field field = field_of(p.face);
     const Face_plane& plane = field.plane();
-    P2 x = plane.point(p.barycentric);
-    // the copies lowest on circles around it, from a quarter of the way to
-    // its neighbour down to 1/256 of that (the cones' junction may lie just
-    // beside the linear one)
+    const Point_2 start = plane.point(p.barycentric);
     const double r = 0.25 * std::sqrt(CGAL::to_double(CGAL::squared_distance(p.point, neighbour)));
-    std::set<std::size_t> around;
-    const int directions = 24;
-    for(double radius = r; radius >= r / 256; radius /= 4)
-      for(int k = 0; k < directions; ++k)
-      {
-        const double phi = 2 * CGAL_PI * k / directions;
-        around.insert(field.lowest({{x[0] + radius * std::cos(phi), x[1] + radius * std::sin(phi)}}).first);
-      }
+    const std::set<std::size_t> around = copies_around(field, start, r);
     if(around.size() != 3) { ++st.points_kept; return p; }
     const std::vector<std::size_t> c(around.begin(), around.end());
-    // Newton on (v_a - v_b, v_a - v_c) = 0; the gradient of a cone is the unit
-    // vector from its apex
-    const P2 start = x;
-    bool converged = false;
-    for(int it = 0; it < 50 && !converged; ++it)
-    {
-      std::array<P2, 3> u;
-      std::array<double, 3> v;
-      for(int j = 0; j < 3; ++j)
-      {
-        const P2 a = field.apex(c[j], x);
-        const double len = std::hypot(x[0] - a[0], x[1] - a[1]);
-        if(!(len > 0)) { ++st.points_kept; return p; }
-        u[j] = {{(x[0] - a[0]) / len, (x[1] - a[1]) / len}};
-        v[j] = field.value(c[j], x);
-      }
-      const double f0 = v[0] - v[1], f1 = v[0] - v[2];
-      const double j00 = u[0][0] - u[1][0], j01 = u[0][1] - u[1][1], j10 = u[0][0] - u[2][0], j11 = u[0][1] - u[2][1];
-      const double det = j00 * j11 - j01 * j10;
-      if(!(std::abs(det) > 1e-12)) { ++st.points_kept; return p; }
-      const double dx = (j11 * f0 - j01 * f1) / det, dy = (-j10 * f0 + j00 * f1) / det;
-      x = {{x[0] - dx, x[1] - dy}};
-      converged = std::hypot(dx, dy) <= 1e-14 * (mean_edge_ + std::hypot(x[0], x[1]));
-    }
+    Point_2 x = start;
+    const bool converged = where_three_cones_agree(field, c, x);
     const Bary b = plane.barycentric(x);
     const bool inside = b[0] > 0 && b[1] > 0 && b[2] > 0;
-    const double moved = std::hypot(x[0] - start[0], x[1] - start[1]);
+    const double moved = std::sqrt(CGAL::squared_distance(x, start));
     const auto best = field.lowest(x);
     const double va = field.value(c[0], x);
     if(!converged || !inside || moved > 2 * r ||
@@ -447,6 +411,50 @@ private:
     count_move(p, q, st);
     ++st.junctions_moved;
     return q;
+  }
+
+  // The copies lowest on circles around x, from radius r down to r/256 (the
+  // cones' junction may lie just beside the linear one).
+  static std::set<std::size_t> copies_around(const Face_cone_field& field, const Point_2& x, double r)
+  {
+    std::set<std::size_t> around;
+    const int directions = 24;
+    for(double radius = r; radius >= r / 256; radius /= 4)
+      for(int k = 0; k < directions; ++k)
+      {
+        const double phi = 2 * CGAL_PI * k / directions;
+        around.insert(field.lowest(x + radius * Vector_2(std::cos(phi), std::sin(phi))).first);
+      }
+    return around;
+  }
+
+  // Newton on (v_a - v_b, v_a - v_c) = 0 from x for the copies c; the gradient
+  // of a cone is the unit vector from its apex. Whether it converged.
+  bool where_three_cones_agree(const Face_cone_field& field, const std::vector<std::size_t>& c, Point_2& x) const
+  {
+    for(int it = 0; it < 50; ++it)
+    {
+      std::array<Vector_2, 3> u;
+      std::array<double, 3> v;
+      for(int j = 0; j < 3; ++j)
+      {
+        const Vector_2 from_apex = x - field.apex(c[j], x);
+        const double len = std::sqrt(from_apex.squared_length());
+        if(!(len > 0)) return false;
+        u[j] = from_apex / len;
+        v[j] = field.value(c[j], x);
+      }
+      // the Jacobian's rows and the Newton step (Cramer's rule)
+      const Vector_2 r0 = u[0] - u[1], r1 = u[0] - u[2];
+      const double f0 = v[0] - v[1], f1 = v[0] - v[2];
+      const double det = CGAL::determinant(r0, r1);
+      if(!(std::abs(det) > 1e-12)) return false;
+      const Vector_2 step((r1.y() * f0 - r0.y() * f1) / det, (-r1.x() * f0 + r0.x() * f1) / det);
+      x = x - step;
+      if(std::sqrt(step.squared_length()) <= 1e-14 * (mean_edge_ + std::sqrt((x - CGAL::ORIGIN).squared_length())))
+        return true;
+    }
+    return false;
   }
 
   // The faces that hold a point: its face, the face across its edge, or the
@@ -507,19 +515,19 @@ private:
              const Bary& bb, std::vector<Ridge_point<Point> >& out, Cone_ridge_statistics& st, int depth) const
   {
     const Face_plane& plane = field.plane();
-    const P2 xa = plane.point(ba), xb = plane.point(bb);
-    const double len = std::hypot(xb[0] - xa[0], xb[1] - xa[1]);
+    const Point_2 xa = plane.point(ba), xb = plane.point(bb);
+    const double len = std::sqrt(CGAL::squared_distance(xa, xb));
     if(depth >= 12 || !(len > 2 * tolerance_)) return;
-    const P2 m = {{0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1])}};
-    const P2 d = {{-(xb[1] - xa[1]) / len, (xb[0] - xa[0]) / len}};
+    const Point_2 m = CGAL::midpoint(xa, xb);
+    const Vector_2 d = (xb - xa).perpendicular(CGAL::COUNTERCLOCKWISE) / len;
     const Bary bm = {{0.5 * (ba[0] + bb[0]), 0.5 * (ba[1] + bb[1]), 0.5 * (ba[2] + bb[2])}};
-    const Bary w = barycentric_direction(plane, d);
+    const Bary w = plane.barycentric(d);
     const Bary minus_w = {{-w[0], -w[1], -w[2]}};
     const double hi = (std::min)(0.5 * len, room(bm, w, 0.999)), lo = -(std::min)(0.5 * len, room(bm, minus_w, 0.999));
-    P2 root;
+    Point_2 root;
     if(!(hi > 0 && lo < 0)) return;
     if(!bisect(field, m, d, lo, hi, root)) return;
-    if(std::hypot(root[0] - m[0], root[1] - m[1]) <= tolerance_) return;
+    if(CGAL::squared_distance(root, m) <= tolerance_ * tolerance_) return;
     const Bary br = plane.barycentric(root);
     split(field, f, like, ba, br, out, st, depth + 1);
     Ridge_point<Point> r = make_point(like, f, br);

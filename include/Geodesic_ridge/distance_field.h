@@ -16,6 +16,7 @@
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 #include <Geodesic_ridge/cone_ridge.h>
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/mesh_maps.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -246,22 +247,21 @@ template <class TriangleMesh, class Point, class NamedParameters = CGAL::paramet
 auto make_distance_field(const TriangleMesh& tm, const Ridge_curve<TriangleMesh, Point>& ridge,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  typedef Geodesic_distance_field<TriangleMesh, std::decay_t<decltype(vim)>, std::decay_t<decltype(fim)> > Field_type;
+  const auto maps = internal::mesh_maps(tm, np);
+  typedef decltype(maps) Maps;
+  typedef Geodesic_distance_field<TriangleMesh, typename Maps::Vertex_index_map, typename Maps::Face_index_map>
+      Field_type;
   if(ridge.regions.size() != num_faces(tm) || ridge.vertex_distances.size() != num_vertices(tm))
     throw Invalid_parameter_error("the ridge curve was not computed on this mesh");
   const Field kind = CGAL::parameters::choose_parameter(
       CGAL::parameters::get_parameter(np, internal_np::field_t()), Field::linear);
-  if(kind == Field::linear) return Field_type(ridge.regions, ridge.vertex_distances, vim, fim);
+  if(kind == Field::linear) return Field_type(ridge.regions, ridge.vertex_distances, maps.vim, maps.fim);
   if(ridge.cones.size() != num_faces(tm))
     throw Invalid_parameter_error("the ridge curve has no cones: compute it with parameters::field(Field::cone)");
-  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                                      get_const_property_map(CGAL::vertex_point, tm));
-  const internal::Faces_by_index<TriangleMesh, std::decay_t<decltype(vpm)> > faces_by_index(tm, vpm, fim);
+  const internal::Faces_by_index<TriangleMesh, typename Maps::Vertex_point_map> faces_by_index(tm, maps.vpm, maps.fim);
   std::vector<std::array<Point, 3> > corners;
   for(std::size_t f = 0; f < num_faces(tm); ++f) corners.push_back(faces_by_index.corner_points(f));
-  return Field_type(ridge.regions, ridge.cones, corners, ridge.vertex_distances, vim, fim);
+  return Field_type(ridge.regions, ridge.cones, corners, ridge.vertex_distances, maps.vim, maps.fim);
 }
 
 /// \ingroup PkgGeodesicRidgeRef

@@ -15,6 +15,8 @@
 #define GEODESIC_RIDGE_EXTENDED_SURFACE_H
 
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/faces_by_index.h>
+#include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/rough_cut_locus.h>
 
@@ -25,7 +27,6 @@
 #include <array>
 #include <cstdint>
 #include <limits>
-#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,9 +47,6 @@ struct Extended_surface_statistics
   std::size_t refused_gluings = 0;      ///< closures refused: end faces not adjacent (should be 0)
   std::size_t open_fans = 0;            ///< full fans left open: closing them would overlap another fan
   std::size_t number_of_leaf_vertices = 0; ///< copies of leaves of K (fans winding past 2π)
-  std::size_t guided_faces = 0;         ///< copies added by the growth guided by the exact distance on M
-  int guided_rings = 0;                 ///< rings the guided growth took (its deepest copy)
-  bool guided_ring_cap_hit = false;     ///< the guided growth stopped at the ring cap
 };
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -90,15 +88,11 @@ namespace internal {
 /// Builds E from M and K. Works on indices: face f of M has corners
 /// c_k = source(h_k) with h_0 = halfedge(f), h_{k+1} = next(h_k); its edge k
 /// runs from corner k to corner k+1 (CGAL's `Face_location` order).
-template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
-          class EdgeIndexMap>
+template <class TriangleMesh, class Maps>
 class Extended_surface_builder
 {
-  typedef boost::graph_traits<TriangleMesh>                   GT;
-  typedef typename GT::vertex_descriptor                      vertex_descriptor;
-  typedef typename GT::halfedge_descriptor                    halfedge_descriptor;
-  typedef typename GT::face_descriptor                        face_descriptor;
-  typedef typename boost::property_traits<VertexPointMap>::value_type Point_3;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename Maps::Point Point_3;
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   // A fan at a leaf of K holds at most this many copies of the vertex's star.
   // The sheets grown across the slit from its two sides share that one fan,
@@ -125,38 +119,18 @@ class Extended_surface_builder
     bool leaf;                // at a leaf of K, or left open (leave_open): winds past 2π, never closes
     bool closed;
   };
-  // A copy laid out in the plane of its chain (the copies it was grown from,
-  // back to the cut edge where the chain left D), with the front it carries:
-  // the virtual source of that front and the predicted distance at its
-  // corners. A corner is live when the front is still exact there (within the
-  // slack, against the exact distance on M) and its straight path crosses the
-  // chain's root cut edge: only such fronts need copies beyond the cut.
-  typedef std::array<double, 2> Point_2;
-  struct Unfolding
-  {
-    std::array<Point_2, 3> corner;
-    Point_2 source;
-    std::array<Point_2, 2> root;
-    std::array<double, 3> value;
-    std::array<bool, 3> live;
-  };
 
 public:
-  Extended_surface_builder(const TriangleMesh& tm, const Rough_cut_locus<TriangleMesh>& rcl,
-                           VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim)
-    : tm_(tm), vpm_(vpm), vim_(vim), fim_(fim)
+  Extended_surface_builder(const TriangleMesh& tm, const Rough_cut_locus<TriangleMesh>& rcl, const Maps& maps)
+    : tm_(tm), maps_(maps)
   {
-    index_faces(rcl, eim);
+    index_faces(rcl, maps.eim);
     make_disk();
     const std::size_t nf = num_faces(tm);
     for(std::uint32_t f = 0; f < nf; ++f)
       for(int k = 0; k < 3; ++k)
         if(copies_[f].corner[k] == none) make_vertex_copy_of_sector(f, k);
     stats_.faces_per_ring.push_back(nf);
-    on_cut_.assign(num_vertices(tm), 0);
-    for(std::uint32_t f = 0; f < nf; ++f)
-      for(int k = 0; k < 3; ++k)
-        if(edge_cut_[f][k]) on_cut_[corner_[f][k]] = on_cut_[corner_[f][(k + 1) % 3]] = 1;
   }
 
   /// Grows one ring: a copy across every boundary edge of E (one at a time),
@@ -175,65 +149,11 @@ public:
     stats_.faces_per_ring.push_back(copies_.size() - before);
   }
 
-  /// Gives the builder the exact geodesic distance on M (per vertex index), which
-  /// guides `grow_guided` (with the tree of `rcl`, for the shadows of the cut);
-  /// `slack` is how far from it a predicted distance still counts as exact.
-  /// Call it before growing any ring.
-  void set_exact_distance(const std::vector<double>* exact, double slack,
-                          const Rough_cut_locus<TriangleMesh>& rcl)
-  {
-    exact_ = exact;
-    slack_ = slack;
-    find_shadowed_vertices(rcl);
-  }
-
-
-  /// Grows copies across the boundary of E, one face at a time in rings, while
-  /// the front they continue is predicted (by unfolding) to be exact at a
-  /// vertex it reaches through the cut: the shadow of every cut edge, however
-  /// wide, plus one face of margin. Stops when no such front is left or at
-  /// `maximum_rings`.
-  void grow_guided(int maximum_rings)
-  {
-    if(exact_ == nullptr) return;
-    std::vector<std::pair<std::uint32_t, int> > frontier;
-    for(std::uint32_t c = 0; c < copies_.size(); ++c)
-      for(int k = 0; k < 3; ++k)
-        if(copies_[c].nb[k] == none && edge_is_live(c, k)) frontier.emplace_back(c, k);
-    int deepest = stats_.rings;
-    const std::size_t start = copies_.size();
-    while(!frontier.empty())
-    {
-      if(stats_.rings >= maximum_rings)
-      {
-        stats_.guided_ring_cap_hit = true;
-        break;
-      }
-      const int r = ++stats_.rings;
-      const std::size_t before = copies_.size();
-      std::vector<std::pair<std::uint32_t, int> > next;
-      for(const auto& [c, k] : frontier)
-      {
-        if(copies_[c].nb[k] != none) continue;
-        const std::uint32_t n = add_copy_across(c, k, r);
-        if(n == none) continue;
-        for(int j = 0; j < 3; ++j)
-          if(copies_[n].nb[j] == none && edge_is_live(n, j)) next.emplace_back(n, j);
-      }
-      stats_.faces_per_ring.push_back(copies_.size() - before);
-      if(copies_.size() > before) deepest = r;
-      frontier.swap(next);
-    }
-    stats_.guided_faces += copies_.size() - start;
-    stats_.guided_rings = std::max(stats_.guided_rings, deepest);
-  }
-
   /// Writes E as a `Surface_mesh`: its vertices (one per merged vertex copy),
   /// its glued halfedges, its faces (one per copy) and its border, then the
   /// source in it.
   template <class Point>
-  void materialize(Extended_surface<Point>& E, const Geodesic_source<TriangleMesh>& src,
-                   VertexIndexMap vim, FaceIndexMap fim)
+  void materialize(Extended_surface<Point>& E, const Geodesic_source<TriangleMesh>& src)
   {
     typedef typename Extended_surface<Point>::Mesh Mesh;
     E.mesh.clear();
@@ -244,7 +164,7 @@ public:
     link_border(E.mesh, evertex, he);
     if(!CGAL::is_valid_polygon_mesh(E.mesh))
       throw Algorithm_error("the extended surface is not a valid polygon mesh");
-    place_source(E, src, vim, fim, evertex);
+    place_source(E, src, evertex);
     stats_.number_of_faces = E.mesh.number_of_faces();
     stats_.number_of_vertices = E.mesh.number_of_vertices();
     E.statistics = stats_;
@@ -256,32 +176,24 @@ public:
 private:
   // Per face: its corners, the face and edge across each edge, whether that
   // edge is cut; per vertex its degree.
-  template <class EdgeIndexMap_>
-  void index_faces(const Rough_cut_locus<TriangleMesh>& rcl, EdgeIndexMap_ eim)
+  void index_faces(const Rough_cut_locus<TriangleMesh>& rcl, typename Maps::Edge_index_map eim)
   {
+    const Faces_by_index<TriangleMesh, typename Maps::Vertex_point_map> faces(tm_, maps_.vpm, maps_.fim);
     const std::size_t nv = num_vertices(tm_), nf = num_faces(tm_);
     corner_.resize(nf);
-    across_.resize(nf);
-    across_edge_.resize(nf);
+    across_ = faces_across(tm_, maps_.fim);
     edge_cut_.resize(nf);
     vertex_of_.resize(nv);
-    for(vertex_descriptor v : vertices(tm_)) vertex_of_[get(vim_, v)] = v;
+    for(vertex_descriptor v : vertices(tm_)) vertex_of_[get(maps_.vim, v)] = v;
     degree_.assign(nv, 0);
-    for(face_descriptor f : faces(tm_))
+    for(std::uint32_t f = 0; f < nf; ++f)
     {
-      const std::uint32_t fi = static_cast<std::uint32_t>(get(fim_, f));
-      halfedge_descriptor h = halfedge(f, tm_);
-      for(int k = 0; k < 3; ++k, h = next(h, tm_))
+      const auto h = faces.corner_halfedges(f);
+      for(int k = 0; k < 3; ++k)
       {
-        corner_[fi][k] = static_cast<std::uint32_t>(get(vim_, source(h, tm_)));
-        ++degree_[corner_[fi][k]];
-        const halfedge_descriptor o = opposite(h, tm_);
-        const face_descriptor g = face(o, tm_);
-        across_[fi][k] = static_cast<std::uint32_t>(get(fim_, g));
-        std::uint8_t kk = 0;
-        for(halfedge_descriptor x = halfedge(g, tm_); x != o; x = next(x, tm_)) ++kk;
-        across_edge_[fi][k] = kk;
-        edge_cut_[fi][k] = rcl.is_cut_edge[get(eim, edge(h, tm_))] != 0;
+        corner_[f][k] = static_cast<std::uint32_t>(get(maps_.vim, source(h[k], tm_)));
+        ++degree_[corner_[f][k]];
+        edge_cut_[f][k] = rcl.is_cut_edge[get(eim, edge(h[k], tm_))] != 0;
       }
     }
   }
@@ -300,7 +212,7 @@ private:
       {
         c.corner[k] = none;
         if(edge_cut_[f][k]) c.nb[k] = none;
-        else { c.nb[k] = across_[f][k]; c.nb_edge[k] = across_edge_[f][k]; }
+        else { c.nb[k] = face_across(f, k); c.nb_edge[k] = static_cast<std::uint8_t>(across_[f][k].second); }
       }
     }
   }
@@ -316,7 +228,7 @@ private:
     std::uint32_t steps = 0;
     while(!edge_cut_[g][(kg + 2) % 3] && steps < degree_[v])
     {
-      const std::uint32_t p = across_[g][(kg + 2) % 3];
+      const std::uint32_t p = face_across(g, (kg + 2) % 3);
       kg = position_of(p, v);
       g = p;
       ++steps;
@@ -334,7 +246,7 @@ private:
       ++fan.size;
       fan.last = h;
       if(fan.size == degree_[v] || edge_cut_[h][kh]) break;
-      const std::uint32_t n = across_[h][kh];
+      const std::uint32_t n = face_across(h, kh);
       kh = position_of(n, v);
       h = n;
     }
@@ -363,7 +275,7 @@ private:
         const std::uint32_t root = find(copies_[c].corner[k]);
         if(evertex[root] != none) continue;
         evertex[root] = static_cast<std::uint32_t>(E.mesh.number_of_vertices());
-        E.mesh.add_vertex(get(vpm_, vertex_of_[fans_[root].vertex]));
+        E.mesh.add_vertex(get(maps_.vpm, vertex_of_[fans_[root].vertex]));
         E.original_vertex.push_back(fans_[root].vertex);
       }
     return evertex;
@@ -431,22 +343,25 @@ private:
   }
 
   template <class Point>
-  void place_source(Extended_surface<Point>& E, const Geodesic_source<TriangleMesh>& src, VertexIndexMap vim,
-                    FaceIndexMap fim, const std::vector<std::uint32_t>& evertex)
+  void place_source(Extended_surface<Point>& E, const Geodesic_source<TriangleMesh>& src,
+                    const std::vector<std::uint32_t>& evertex)
   {
     typedef typename Extended_surface<Point>::Mesh Mesh;
     E.source_is_vertex = (src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX);
     E.source_location.first =
-        typename Mesh::Face_index(static_cast<typename Mesh::size_type>(get(fim, src.location.first)));
+        typename Mesh::Face_index(static_cast<typename Mesh::size_type>(get(maps_.fim, src.location.first)));
     E.source_location.second = src.location.second;
     if(!E.source_is_vertex) return;
     // Looked up now that the mesh is final: vertex numbering changes as copies merge.
-    const std::uint32_t sv = static_cast<std::uint32_t>(get(vim, src.vertex));
-    const std::uint32_t f = static_cast<std::uint32_t>(get(fim, src.location.first));
+    const std::uint32_t sv = static_cast<std::uint32_t>(get(maps_.vim, src.vertex));
+    const std::uint32_t f = static_cast<std::uint32_t>(get(maps_.fim, src.location.first));
     E.source_vertex = vertex_at<Mesh>(evertex, f, position_of(f, sv));
     if(E.original_vertex[E.source_vertex] != sv || CGAL::is_border(E.source_vertex, E.mesh))
       throw Algorithm_error("the source is not an interior vertex of the extended surface");
   }
+
+  // the face of M across edge k of face f
+  std::uint32_t face_across(std::uint32_t f, int k) const { return static_cast<std::uint32_t>(across_[f][k].first); }
 
   int position_of(std::uint32_t f, std::uint32_t v) const
   {
@@ -471,8 +386,8 @@ private:
   std::uint32_t add_copy_across(std::uint32_t c, int k, int r)
   {
     const std::uint32_t f = copies_[c].face;
-    const std::uint32_t g = across_[f][k];
-    const int kg = across_edge_[f][k];
+    const std::uint32_t g = face_across(f, k);
+    const int kg = across_[f][k].second;
     const std::uint32_t xu = find(copies_[c].corner[k]), xw = find(copies_[c].corner[(k + 1) % 3]);
     Fan& fu = fans_[xu];
     Fan& fw = fans_[xw];
@@ -508,142 +423,9 @@ private:
     ++fans_[xu].size;
     fans_[xw].first = n;
     ++fans_[xw].size;
-    if(exact_ != nullptr)
-    {
-      // the new copy continues the front of c across edge k
-      if(unfold_.size() <= n) unfold_.resize(n + 1);
-      unfold_[n] = unfold_across(copies_[c].ring > 0 ? unfold_[c] : root_unfolding(c, k), k, g, kg);
-    }
     close_if_complete(xu);
     close_if_complete(find(xw));
     return n;
-  }
-
-  // A vertex is shadowed when its path in the tree of stage 1 (which follows
-  // the geodesics) goes through a vertex of K from one of its sectors in D to
-  // another: its shortest path crosses the cut, so its copy in D is inexact and
-  // the front that crossed needs copies there.
-  void find_shadowed_vertices(const Rough_cut_locus<TriangleMesh>& rcl)
-  {
-    const std::size_t nv = vertex_of_.size();
-    shadowed_.assign(nv, 0);
-    if(rcl.parent.size() != nv) return;
-    // the sector of p in D that holds the (uncut) edge from p to q
-    auto sector = [&](std::uint32_t p, std::uint32_t q) -> std::uint32_t {
-      for(auto h : CGAL::halfedges_around_source(vertex_of_[p], tm_))
-        if(static_cast<std::uint32_t>(get(vim_, target(h, tm_))) == q && !is_border(h, tm_))
-        {
-          const std::uint32_t f = static_cast<std::uint32_t>(get(fim_, face(h, tm_)));
-          return find(copies_[f].corner[position_of(f, p)]);
-        }
-      return none;
-    };
-    // parents before children: by depth in the tree
-    std::vector<std::uint32_t> parent(nv), order, depth(nv, none);
-    for(std::uint32_t v = 0; v < nv; ++v) parent[v] = static_cast<std::uint32_t>(get(vim_, rcl.parent[v]));
-    for(std::uint32_t v = 0; v < nv; ++v)
-    {
-      std::vector<std::uint32_t> chain;
-      std::uint32_t x = v;
-      while(depth[x] == none && parent[x] != x && chain.size() <= nv) { chain.push_back(x); x = parent[x]; }
-      if(depth[x] == none) depth[x] = 0;
-      for(auto it = chain.rbegin(); it != chain.rend(); ++it) depth[*it] = depth[parent[*it]] + 1;
-    }
-    order.resize(nv);
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return depth[a] < depth[b]; });
-    for(std::uint32_t x : order)
-    {
-      const std::uint32_t p = parent[x];
-      if(p == x) continue;
-      bool crosses = false;
-      const std::uint32_t pp = parent[p];
-      if(on_cut_[p] && pp != p) crosses = sector(p, pp) != sector(p, x);
-      shadowed_[x] = shadowed_[p] || crosses;
-    }
-  }
-
-  Point_2 planar_third(const Point_2& a, const Point_2& b, double la, double lb, double side) const
-  {
-    // the point at distances la from a and lb from b, on the given side of ab
-    const double ex = b[0] - a[0], ey = b[1] - a[1];
-    const double l = std::sqrt(ex * ex + ey * ey);
-    const double t = (la * la - lb * lb + l * l) / (2 * l);
-    const double h = std::sqrt(std::max(0.0, la * la - t * t));
-    const double ux = ex / l, uy = ey / l;
-    const double s = side >= 0 ? 1.0 : -1.0;
-    return {{a[0] + t * ux - s * h * uy, a[1] + t * uy + s * h * ux}};
-  }
-  double length(std::uint32_t v, std::uint32_t w) const
-  {
-    const auto p = get(vpm_, vertex_of_[v]), q = get(vpm_, vertex_of_[w]);
-    return std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
-  }
-  static double cross(const Point_2& o, const Point_2& a, const Point_2& b)
-  {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-  }
-  static bool segments_meet(const Point_2& p, const Point_2& q, const Point_2& a, const Point_2& b)
-  {
-    const double d1 = cross(p, q, a), d2 = cross(p, q, b), d3 = cross(a, b, p), d4 = cross(a, b, q);
-    return ((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) && ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0));
-  }
-  static double distance_2(const Point_2& a, const Point_2& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
-
-  // (Unfoldings exist only when an exact distance is given.)
-  // D copy c laid out with its cut edge k on the x axis and the face above it;
-  // its front is the exact distance on M, its virtual source found from the
-  // distances at the edge's ends, on the face's side (the front reaches the
-  // cut from there).
-  Unfolding root_unfolding(std::uint32_t c, int k) const
-  {
-    Unfolding u;
-    const std::uint32_t f = copies_[c].face;
-    const std::uint32_t va = corner_[f][k], vb = corner_[f][(k + 1) % 3], vq = corner_[f][(k + 2) % 3];
-    const double l = length(va, vb);
-    u.corner[k] = {{0, 0}};
-    u.corner[(k + 1) % 3] = {{l, 0}};
-    u.corner[(k + 2) % 3] = planar_third(u.corner[k], u.corner[(k + 1) % 3], length(va, vq), length(vb, vq), 1);
-    // the root: the cut edge, prolonged by twice its length at both ends (the
-    // cut is a zigzag of edges: a front crossing it nearby is the one this
-    // chain continues; the sheet grown across the neighbouring edges is the
-    // same, made once)
-    u.root = {{Point_2{{-2 * l, 0}}, Point_2{{3 * l, 0}}}};
-    u.live = {{false, false, false}};
-    for(int j = 0; j < 3; ++j) u.value[j] = (*exact_)[corner_[f][j]];
-    u.source = planar_third(u.corner[k], u.corner[(k + 1) % 3], u.value[k], u.value[(k + 1) % 3], 1);
-    u.live[k] = u.live[(k + 1) % 3] = true;
-    return u;
-  }
-
-  // The copy of face g grown across edge k of a copy laid out as p: its edge kg
-  // is that edge, reversed; its third corner goes on the other side.
-  Unfolding unfold_across(const Unfolding& p, int k, std::uint32_t g, int kg) const
-  {
-    Unfolding u;
-    u.source = p.source;
-    u.root = p.root;
-    const int a = kg, b = (kg + 1) % 3, x = (kg + 2) % 3;
-    u.corner[a] = p.corner[(k + 1) % 3];
-    u.corner[b] = p.corner[k];
-    u.value[a] = p.value[(k + 1) % 3];
-    u.value[b] = p.value[k];
-    u.live[a] = p.live[(k + 1) % 3];
-    u.live[b] = p.live[k];
-    const double side = -cross(u.corner[a], u.corner[b], p.corner[(k + 2) % 3]); // the parent's third corner's other side
-    u.corner[x] = planar_third(u.corner[a], u.corner[b], length(corner_[g][a], corner_[g][x]),
-                               length(corner_[g][b], corner_[g][x]), side >= 0 ? 1 : -1);
-    u.value[x] = distance_2(u.source, u.corner[x]);
-    const std::uint32_t vx = corner_[g][x];
-    u.live[x] = std::abs(u.value[x] - (*exact_)[vx]) <= slack_ && (shadowed_[vx] || on_cut_[vx]) &&
-                segments_meet(u.source, u.corner[x], u.root[0], u.root[1]);
-    return u;
-  }
-
-  bool edge_is_live(std::uint32_t c, int k) const
-  {
-    if(copies_[c].ring == 0) return exact_ != nullptr; // a cut edge of D: its front crosses it
-    return c < unfold_.size() && (unfold_[c].live[k] || unfold_[c].live[(k + 1) % 3]);
   }
 
   void close_if_complete(std::uint32_t x0)
@@ -660,7 +442,7 @@ private:
       const int kL = position_of_copy(L, x), kF = position_of_copy(F, x);
       const int eL = kL, eF = (kF + 2) % 3; // L's next edge at v, F's prev edge at v
       if(copies_[L].nb[eL] != none || copies_[F].nb[eF] != none ||
-         across_[copies_[L].face][eL] != copies_[F].face)
+         face_across(copies_[L].face, eL) != copies_[F].face)
       {
         ++stats_.refused_gluings;
         continue;
@@ -722,21 +504,15 @@ private:
   }
 
   const TriangleMesh& tm_;
-  VertexPointMap vpm_;
-  VertexIndexMap vim_;
-  FaceIndexMap fim_;
+  const Maps maps_;
   std::vector<vertex_descriptor> vertex_of_;
-  std::vector<std::array<std::uint32_t, 3> > corner_, across_;
-  std::vector<std::array<std::uint8_t, 3> > across_edge_;
+  std::vector<std::array<std::uint32_t, 3> > corner_;
+  Faces_across across_;
   std::vector<std::array<bool, 3> > edge_cut_;
   std::vector<std::uint32_t> degree_;
   std::vector<Copy> copies_;
   Union_find vertex_copies_; // vertex copies merged by closing fans
   std::vector<Fan> fans_;
-  std::vector<Unfolding> unfold_; // per copy (entries of D copies unused)
-  std::vector<char> on_cut_, shadowed_; // per vertex of M
-  const std::vector<double>* exact_ = nullptr;
-  double slack_ = 0;
   Extended_surface_statistics stats_;
 };
 
@@ -792,21 +568,12 @@ Extended_surface<typename boost::property_traits<typename CGAL::GetVertexPointMa
 build_extended_surface(const TriangleMesh& tm, const Rough_cut_locus<TriangleMesh>& rcl, int rings,
                        const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   if(rings < 0) throw Invalid_parameter_error("the number of extension rings must be non-negative");
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  const auto eim = CGAL::get_initialized_edge_index_map(tm, np);
-  typedef typename boost::property_traits<decltype(vpm)>::value_type Point;
-  internal::Extended_surface_builder<TriangleMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(vim)>,
-                                     std::decay_t<decltype(fim)>, std::decay_t<decltype(eim)> >
-      builder(tm, rcl, vpm, vim, fim, eim);
+  typedef internal::Mesh_maps_of<TriangleMesh, NamedParameters> Maps;
+  internal::Extended_surface_builder<TriangleMesh, Maps> builder(tm, rcl, internal::mesh_maps(tm, np));
   for(int r = 0; r < rings; ++r) builder.grow_ring();
-  Extended_surface<Point> E;
-  builder.materialize(E, rcl.source, vim, fim);
+  Extended_surface<typename Maps::Point> E;
+  builder.materialize(E, rcl.source);
   return E;
 }
 

@@ -10,6 +10,7 @@
 #define GEODESIC_RIDGE_ISOLINES_H
 
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/mesh_maps.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -100,11 +101,11 @@ OutputIterator isolines(const TriangleMesh& tm, DistanceMap distance_map, const 
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
-  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                                      get_const_property_map(CGAL::vertex_point, tm));
-  typedef typename boost::property_traits<std::decay_t<decltype(vpm)> >::value_type Point;
-  const auto eim = CGAL::get_initialized_edge_index_map(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const auto maps = internal::mesh_maps(tm, np);
+  typedef typename decltype(maps)::Point Point;
+  const auto& vpm = maps.vpm;
+  const auto& eim = maps.eim;
+  const auto& fim = maps.fim;
   const std::size_t ne = num_edges(tm), nf = num_faces(tm);
   for(double level : levels)
     if(!std::isfinite(level)) throw Invalid_parameter_error("an iso-line level is not a finite number");

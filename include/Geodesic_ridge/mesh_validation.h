@@ -8,6 +8,7 @@
 #define GEODESIC_RIDGE_MESH_VALIDATION_H
 
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/union_find.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -621,15 +622,13 @@ template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_
 void validate_triangle_mesh(const TriangleMesh& tm,
                             const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   namespace iv = internal::validation;
 
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  using Point_3 = typename boost::property_traits<std::remove_const_t<decltype(vpm)>>::value_type;
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto maps = internal::mesh_maps(tm, np);
+  using Point_3 = typename decltype(maps)::Point;
+  const auto& vpm = maps.vpm;
+  const auto& vim = maps.vim;
 
   // Flatten to a soup in iteration order and reuse the soup checks: one set
   // of rules and messages for both entry points. The index map may be sparse

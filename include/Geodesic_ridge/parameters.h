@@ -22,8 +22,6 @@ namespace Geodesic_ridge {
 namespace internal_np {
 /// Tag of the significance tolerance (a fraction of the total area).
 struct tolerance_t {};
-/// Tag of the leaf extension of the cut graph (a fraction of the tolerance).
-struct leaf_extension_t {};
 /// Tag of the curvature that draws the cut graph's leaves on (degrees).
 struct leaf_curvature_t {};
 /// Tag of the curvature a kept branch of the cut graph must enclose (degrees).
@@ -35,13 +33,6 @@ struct repair_t {};
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Default significance tolerance, as recommended by the paper (§4.4).
 constexpr double default_tolerance = 0.025;
-
-/// \ingroup PkgGeodesicRidgeNamedParameters
-/// Default leaf extension: 1, i.e. none (see `parameters::leaf_extension`).
-/// A smaller value brings the ridge to the corners of the analytic cases but
-/// costs precision on real meshes, through the false tips it adds (measured
-/// in the user manual, \ref GeodesicRidgeSecParameters).
-constexpr double default_leaf_extension = 1.0;
 
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Default curvature that draws a leaf of K on (degrees; see
@@ -79,19 +70,10 @@ namespace parameters {
 GEODESIC_RIDGE_NAMED_PARAMETER(double, tolerance)
 
 /// \ingroup PkgGeodesicRidgeNamedParameters
-/// Every leaf of the kept dual structure goes on along its most significant
-/// pruned branch (one path, no new branches) while that branch's significance
-/// is at least `f` times the tolerance times the total area (default 1: no
-/// extension). The ridge is only found where the cut graph cuts: a branch that
-/// stops short of the ridge's end misses its end. `f` in [0, 1].
-GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_extension)
-
-/// \ingroup PkgGeodesicRidgeNamedParameters
 /// Every pruned branch of the dual tree that hangs from the kept structure
 /// (or from a branch kept this way) and holds at least `degrees` of Gaussian
 /// curvature (2π minus the angle sum, shared among a vertex's faces by angle)
-/// is kept too (default `default_leaf_curvature`; 0 turns it off; it takes
-/// precedence over `leaf_extension`). A leaf of the cut locus of a polyhedral
+/// is kept too (default `default_leaf_curvature`; 0 turns it off). A leaf of the cut locus of a polyhedral
 /// surface is a vertex of positive curvature: this brings K, and so the ridge,
 /// to the corners and tips that the tolerance cut off.
 GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_curvature)
@@ -133,14 +115,6 @@ double get_number_in_range(const NamedParameters& np, double default_value, doub
   if(!(x >= lo && (open_above ? x < hi : x <= hi)))
     throw Invalid_parameter_error(what + " " + std::to_string(x) + " is out of range: it must be in " + range);
   return x;
-}
-
-/// Reads the leaf extension from `np` and checks it.
-template <class NamedParameters>
-double get_leaf_extension(const NamedParameters& np)
-{
-  return get_number_in_range<internal_np::leaf_extension_t>(np, default_leaf_extension, 0, 1, false,
-                                                            "leaf extension", "[0, 1]");
 }
 
 /// Reads the leaf curvature (degrees) from `np` and checks it.

@@ -142,9 +142,8 @@ inline Exact_barycentric centroid(const std::vector<Exact_barycentric>& polygon)
 // with several cells, then the output faces (a face copied, or split into its
 // cells, each triangulated), one distance per output vertex, and the ridge's
 // edges marked.
-template <class TriangleMesh, class Point, class MutableFaceGraph, class Field, class VertexPointMap,
-          class VertexIndexMap, class FaceIndexMap, class EdgeIndexMap, class OutputPointMap, class DistanceMap,
-          class ConstrainedMap, class Visitor>
+template <class TriangleMesh, class Point, class MutableFaceGraph, class Field, class Maps, class OutputPointMap,
+          class DistanceMap, class ConstrainedMap, class Visitor>
 class Ridge_refiner
 {
   typedef boost::graph_traits<MutableFaceGraph> OGT;
@@ -154,11 +153,10 @@ class Ridge_refiner
 
 public:
   Ridge_refiner(const TriangleMesh& tm, const Ridge_curve<TriangleMesh, Point>& ridge, MutableFaceGraph& out,
-                const Field& field, VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim,
-                OutputPointMap vpm_out, DistanceMap distance_out, ConstrainedMap constrained_out, Visitor visitor)
-    : tm_(tm), ridge_(ridge), out_(out), field_(field), vpm_(vpm), vim_(vim), fim_(fim), eim_(eim),
-      vpm_out_(vpm_out), distance_out_(distance_out), constrained_out_(constrained_out), visitor_(visitor),
-      faces_(tm, vpm, fim), nf_(num_faces(tm)),
+                const Field& field, const Maps& maps, OutputPointMap vpm_out, DistanceMap distance_out,
+                ConstrainedMap constrained_out, Visitor visitor)
+    : tm_(tm), maps_(maps), ridge_(ridge), out_(out), field_(field), vpm_out_(vpm_out), distance_out_(distance_out),
+      constrained_out_(constrained_out), visitor_(visitor), faces_(tm, maps.vpm, maps.fim), nf_(num_faces(tm)),
       vertex_of_mesh_vertex_(num_vertices(tm), OGT::null_vertex())
   {}
 
@@ -189,12 +187,12 @@ private:
   auto edge_parameter(std::size_t f, int k, const Barycentric& lambda) const
   {
     const auto h = faces_.corner_halfedges(f);
-    const bool forward = get(vim_, source(h[k], tm_)) < get(vim_, target(h[k], tm_));
+    const bool forward = get(maps_.vim, source(h[k], tm_)) < get(maps_.vim, target(h[k], tm_));
     return forward ? lambda[(k + 1) % 3] : lambda[k];
   }
   std::size_t edge_index(std::size_t f, int k) const
   {
-    return get(eim_, edge(faces_.corner_halfedges(f)[k], tm_));
+    return get(maps_.eim, edge(faces_.corner_halfedges(f)[k], tm_));
   }
 
   // the feature of a barycentric point: -1 interior, else the triangle edge k
@@ -260,8 +258,8 @@ private:
     if(feature >= 3)
     {
       const auto mv = source(h[feature - 3], tm_);
-      out_vertex& mapped = vertex_of_mesh_vertex_[get(vim_, mv)];
-      if(mapped == OGT::null_vertex()) mapped = new_vertex(get(vpm_, mv));
+      out_vertex& mapped = vertex_of_mesh_vertex_[get(maps_.vim, mv)];
+      if(mapped == OGT::null_vertex()) mapped = new_vertex(get(maps_.vpm, mv));
       v = mapped;
     }
     else
@@ -315,7 +313,7 @@ private:
     const auto h = faces_.corner_halfedges(f);
     for(int k = 0; k < 3; ++k)
     {
-      const bool forward = get(vim_, source(h[k], tm_)) < get(vim_, target(h[k], tm_));
+      const bool forward = get(maps_.vim, source(h[k], tm_)) < get(maps_.vim, target(h[k], tm_));
       for(const Q& t : edge_points_[edge_index(f, k)])
       {
         Exact_barycentric l = {{Q(0), Q(0), Q(0)}};
@@ -389,7 +387,7 @@ private:
     const auto& l = p.barycentric;
     const int feature = feature_of(l);
     const auto h = faces_.corner_halfedges(p.face);
-    if(feature >= 3) return vertex_of_mesh_vertex_[get(vim_, source(h[feature - 3], tm_))];
+    if(feature >= 3) return vertex_of_mesh_vertex_[get(maps_.vim, source(h[feature - 3], tm_))];
     const Rounded_point_key key = feature >= 0
         ? Rounded_point_key(1, edge_index(p.face, feature), edge_parameter(p.face, feature, l), 0.)
         : Rounded_point_key(2, p.face, l[1], l[2]);
@@ -429,18 +427,15 @@ private:
   }
 
   const TriangleMesh& tm_;
+  const Maps maps_;
   const Ridge_curve<TriangleMesh, Point>& ridge_;
   MutableFaceGraph& out_;
   const Field& field_;
-  const VertexPointMap vpm_;
-  const VertexIndexMap vim_;
-  const FaceIndexMap fim_;
-  const EdgeIndexMap eim_;
   OutputPointMap vpm_out_;
   DistanceMap distance_out_;
   ConstrainedMap constrained_out_;
   Visitor visitor_;
-  const Faces_by_index<TriangleMesh, VertexPointMap> faces_;
+  const Faces_by_index<TriangleMesh, typename Maps::Vertex_point_map> faces_;
   const std::size_t nf_;
   Refined_mesh_statistics st_;
   std::vector<std::vector<std::vector<Exact_barycentric> > > polygons_; // per face with several cells
@@ -546,11 +541,6 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef boost::graph_traits<MutableFaceGraph> OGT;
-  const auto vpm_in = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point),
-                                       CGAL::get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np_in);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np_in);
-  const auto eim = CGAL::get_initialized_edge_index_map(tm, np_in);
   const auto vpm_out = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
                                         get_property_map(CGAL::vertex_point, out));
   const auto distance_out = choose_parameter(get_parameter(np_out, internal_np::vertex_distance_map_t()),
@@ -563,8 +553,9 @@ Refined_mesh_statistics refine_mesh_along_ridge(const TriangleMesh& tm, const Ri
     throw Invalid_parameter_error("the ridge curve was not computed on this mesh");
   if(num_vertices(out) != 0 || num_faces(out) != 0) throw Invalid_parameter_error("the output mesh must be empty");
   const auto field = make_distance_field(tm, ridge, np_in);
-  return internal::Ridge_refiner(tm, ridge, out, field, vpm_in, vim, fim, eim, vpm_out, distance_out, constrained_out,
-                                 visitor).run();
+  return internal::Ridge_refiner(tm, ridge, out, field, internal::mesh_maps(tm, np_in), vpm_out, distance_out,
+                                 constrained_out, visitor)
+      .run();
 }
 
 } // namespace Geodesic_ridge

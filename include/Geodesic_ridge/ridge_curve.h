@@ -55,6 +55,24 @@ struct Ridge_point
 };
 
 /// \ingroup PkgGeodesicRidgeRef
+/// \brief writes the 3D points of every polyline of `polylines` (as
+/// `Ridge_curve::polylines` holds them) to `out`, one `std::vector<Point_3>`
+/// per polyline: what `IO::write_polylines()` and CGAL's polyline tools take.
+template <class Point_3, class OutputIterator>
+OutputIterator ridge_polyline_points(const std::vector<std::vector<Ridge_point<Point_3> > >& polylines,
+                                     OutputIterator out)
+{
+  for(const auto& polyline : polylines)
+  {
+    std::vector<Point_3> points;
+    points.reserve(polyline.size());
+    for(const Ridge_point<Point_3>& p : polyline) points.push_back(p.point);
+    *out++ = std::move(points);
+  }
+  return out;
+}
+
+/// \ingroup PkgGeodesicRidgeRef
 /// The linear field of one copy over its cell of an original face.
 struct Ridge_region_cell
 {
@@ -357,10 +375,10 @@ Gradient_jump gradient_jump_across_edge(const Point& a, const Point& b, const Po
 // Stage 3 as its named steps (the manual's order), over the state they share:
 // the envelope of every face and its cells (one per surviving copy), the ridge
 // nodes (exact keys) and segments, and the fronts (cells that are one front).
-template <class TriangleMesh, class Point, class VertexPointMap, class VertexIndexMap,
-          class FaceIndexMap, class EdgeIndexMap>
+template <class TriangleMesh, class Maps>
 class Ridge_curve_assembler
 {
+  typedef typename Maps::Point Point;
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
@@ -370,12 +388,10 @@ class Ridge_curve_assembler
 public:
   Ridge_curve_assembler(const TriangleMesh& tm, const Extended_surface<Point>& E,
                         const std::vector<Face_copies>& face_copies, double mean_edge, double minimum_angle,
-                        double kink_angle, VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim,
-                        EdgeIndexMap eim, std::vector<std::vector<Ridge_region_cell> >& regions,
+                        double kink_angle, const Maps& maps, std::vector<std::vector<Ridge_region_cell> >& regions,
                         Ridge_curve_statistics& st)
-    : tm_(tm), E_(E), face_copies_(face_copies), mean_edge_(mean_edge), minimum_angle_(minimum_angle),
-      kink_angle_(kink_angle), vpm_(vpm), vim_(vim), fim_(fim), eim_(eim), regions_(regions), st_(st),
-      faces_(tm, vpm, fim), nf_(num_faces(tm)), same_front_tolerance_(1e-6 * mean_edge)
+    : tm_(tm), maps_(maps), E_(E), face_copies_(face_copies), mean_edge_(mean_edge), minimum_angle_(minimum_angle),
+      kink_angle_(kink_angle), regions_(regions), st_(st), faces_(tm, maps.vpm, maps.fim), nf_(num_faces(tm)), same_front_tolerance_(1e-6 * mean_edge)
   {}
 
   void run(std::vector<std::vector<Ridge_point<Point> > >& polylines)
@@ -488,15 +504,15 @@ private:
     const auto h = faces_.corner_halfedges(f);
     int zeros = 0, nz = -1;
     for(int k = 0; k < 3; ++k) { if(CGAL::is_zero(lambda[k])) ++zeros; else nz = k; }
-    if(zeros == 2) return add_node(Key(0, get(vim_, source(h[nz], tm_)), Q(0), Q(0)), f, lambda);
+    if(zeros == 2) return add_node(Key(0, get(maps_.vim, source(h[nz], tm_)), Q(0), Q(0)), f, lambda);
     for(int k = 0; k < 3; ++k)
       if(CGAL::is_zero(lambda[(k + 2) % 3])) // on edge k, from corner k to corner k+1
       {
         // t runs from the endpoint of smaller vertex index (an edge descriptor may
         // remember the halfedge it was made from, so halfedge(e) is no orientation)
-        const bool forward = get(vim_, source(h[k], tm_)) < get(vim_, target(h[k], tm_));
+        const bool forward = get(maps_.vim, source(h[k], tm_)) < get(maps_.vim, target(h[k], tm_));
         const Q t = forward ? lambda[(k + 1) % 3] : lambda[k];
-        return add_node(Key(1, get(eim_, edge(h[k], tm_)), t, Q(0)), f, lambda);
+        return add_node(Key(1, get(maps_.eim, edge(h[k], tm_)), t, Q(0)), f, lambda);
       }
     return add_node(Key(2, f, lambda[1], lambda[2]), f, lambda);
   }
@@ -548,11 +564,11 @@ private:
       const auto h1s = faces_.corner_halfedges(f1);
       for(int k1 = 0; k1 < 3; ++k1)
       {
-        const std::size_t e = get(eim_, edge(h1s[k1], tm_));
+        const std::size_t e = get(maps_.eim, edge(h1s[k1], tm_));
         if(edge_done[e]) continue;
         edge_done[e] = 1;
         const halfedge_descriptor h2 = opposite(h1s[k1], tm_);
-        const std::size_t f2 = get(fim_, face(h2, tm_));
+        const std::size_t f2 = get(maps_.fim, face(h2, tm_));
         const auto h2s = faces_.corner_halfedges(f2);
         int k2 = 0;
         while(h2s[k2] != h2) ++k2;
@@ -757,10 +773,10 @@ private:
     std::vector<std::size_t> seen_at;
 
     explicit Curvature_near(const Ridge_curve_assembler& assembler)
-      : a(assembler), angles(corner_angles(a.tm_, a.vpm_, a.vim_, a.fim_)), vertex_of(num_vertices(a.tm_)),
+      : a(assembler), angles(corner_angles(a.tm_, a.maps_.vpm, a.maps_.vim, a.maps_.fim)), vertex_of(num_vertices(a.tm_)),
         seen_at(num_vertices(a.tm_), none)
     {
-      for(vertex_descriptor v : vertices(a.tm_)) vertex_of[get(a.vim_, v)] = v;
+      for(vertex_descriptor v : vertices(a.tm_)) vertex_of[get(a.maps_.vim, v)] = v;
     }
 
     double operator()(std::size_t node)
@@ -771,7 +787,7 @@ private:
       double total = 0;
       for(const auto h : a.faces_.corner_halfedges(a.nodes_[node].face))
       {
-        const std::size_t v = get(a.vim_, source(h, a.tm_));
+        const std::size_t v = get(a.maps_.vim, source(h, a.tm_));
         if(seen_at[v] != node) { seen_at[v] = node; stack.push_back(v); total += angles.curvature(v); }
       }
       while(!stack.empty())
@@ -780,10 +796,10 @@ private:
         stack.pop_back();
         for(auto h : CGAL::halfedges_around_target(halfedge(vertex_of[v], a.tm_), a.tm_))
         {
-          const std::size_t w = get(a.vim_, source(h, a.tm_));
+          const std::size_t w = get(a.maps_.vim, source(h, a.tm_));
           if(seen_at[w] == node) continue;
           seen_at[w] = node;
-          if(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(a.vpm_, vertex_of[w]), p))) > radius) continue;
+          if(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(a.maps_.vpm, vertex_of[w]), p))) > radius) continue;
           total += angles.curvature(w);
           stack.push_back(w);
         }
@@ -840,16 +856,13 @@ private:
   }
 
   const TriangleMesh& tm_;
+  const Maps maps_;
   const Extended_surface<Point>& E_;
   const std::vector<Face_copies>& face_copies_;
   const double mean_edge_, minimum_angle_, kink_angle_;
-  const VertexPointMap vpm_;
-  const VertexIndexMap vim_;
-  const FaceIndexMap fim_;
-  const EdgeIndexMap eim_;
   std::vector<std::vector<Ridge_region_cell> >& regions_;
   Ridge_curve_statistics& st_;
-  const Faces_by_index<TriangleMesh, VertexPointMap> faces_;
+  const Faces_by_index<TriangleMesh, typename Maps::Vertex_point_map> faces_;
   const std::size_t nf_;
   const double same_front_tolerance_;
   // per face: its envelope, either the shared whole-triangle one or one of
@@ -865,18 +878,16 @@ private:
   Union_find fronts_; // cells that are one front
 };
 
-template <class TriangleMesh, class Point, class VertexPointMap, class VertexIndexMap,
-          class FaceIndexMap, class EdgeIndexMap>
+template <class TriangleMesh, class Point, class Maps>
 void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>& E,
                           const std::vector<Face_copies>& face_copies, double mean_edge,
-                          double minimum_angle, double kink_angle,
-                          VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim, EdgeIndexMap eim,
+                          double minimum_angle, double kink_angle, const Maps& maps,
                           std::vector<std::vector<Ridge_point<Point> > >& polylines,
                           std::vector<std::vector<Ridge_region_cell> >& regions,
                           Ridge_curve_statistics& st)
 {
-  Ridge_curve_assembler<TriangleMesh, Point, VertexPointMap, VertexIndexMap, FaceIndexMap, EdgeIndexMap>(
-      tm, E, face_copies, mean_edge, minimum_angle, kink_angle, vpm, vim, fim, eim, regions, st)
+  Ridge_curve_assembler<TriangleMesh, Maps>(tm, E, face_copies, mean_edge, minimum_angle, kink_angle, maps, regions,
+                                            st)
       .run(polylines);
 }
 

@@ -13,6 +13,7 @@
 #include <Geodesic_ridge/exceptions.h>
 #include <Geodesic_ridge/internal/corner_angles.h>
 #include <Geodesic_ridge/internal/graph_polylines.h>
+#include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/mesh_validation.h>
 #include <Geodesic_ridge/parameters.h>
@@ -48,7 +49,7 @@ enum class Edge_role : unsigned char
   source_face,        ///< an edge of a face holding the source (never crossed by T*)
   dual_pruned,        ///< crossed by an edge of T* whose significance is below the tolerance
   dual_kept,          ///< crossed by an edge of T* that survives the pruning
-  dual_leaf_extension, ///< crossed by a pruned edge of T* that extends a kept leaf (see `leaf_extension`,
+  dual_leaf_extension, ///< crossed by a pruned edge of T* kept for the curvature it holds (see
                        ///< `leaf_curvature`)
   dual_false_branch    ///< crossed by an edge of T* significant enough but on a branch that encloses no
                        ///< curvature: a false branch (see `branch_curvature`)
@@ -66,8 +67,8 @@ struct Rough_cut_locus_statistics
   std::size_t number_of_core_dual_edges = 0; ///< dual edges on the 2-core (significance = total area)
   std::size_t number_of_kept_dual_edges = 0; ///< dual edges that survive the pruning (the kept dual structure)
   std::size_t number_of_kept_dual_leaves = 0; ///< faces with exactly one kept dual edge
-  std::size_t number_of_extended_dual_leaves = 0; ///< same, with the leaf extension edges too
-  std::size_t number_of_leaf_extension_edges = 0; ///< pruned dual edges added to extend kept leaves
+  std::size_t number_of_extended_dual_leaves = 0; ///< same, with the leaf extension edges (`leaf_curvature`) too
+  std::size_t number_of_leaf_extension_edges = 0; ///< pruned dual edges kept for their curvature (`leaf_curvature`)
   std::size_t number_of_cut_edges = 0;        ///< |K|
   std::size_t number_of_cut_vertices = 0;    ///< vertices of K
   std::size_t number_of_cut_leaves = 0;       ///< vertices of degree 1 in K
@@ -112,7 +113,7 @@ struct Rough_cut_locus
   std::vector<edge_descriptor> dual_edges;
   /// those that survive the pruning (the kept dual structure), by increasing edge index
   std::vector<edge_descriptor> kept_dual_edges;
-  /// pruned ones that extend leaves of the kept dual structure, by increasing edge index
+  /// pruned ones kept for the curvature they hold (`leaf_curvature`), by increasing edge index
   std::vector<edge_descriptor> leaf_extension_edges;
   /// edges of K that are no rungs: paths that join a corner to K (the leaves
   /// at corners, \ref GeodesicRidgeSecStage1), by increasing edge index
@@ -131,8 +132,7 @@ namespace internal {
 
 // Stage 1 as its named steps (the manual's order), over the state they share.
 // `run()` calls them in order; each step reads what the steps before it left.
-template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class EdgeIndexMap,
-          class FaceIndexMap>
+template <class TriangleMesh, class Maps>
 class Rough_cut_locus_builder
 {
   typedef boost::graph_traits<TriangleMesh>  GT;
@@ -146,12 +146,11 @@ public:
   // The curvature thresholds in radians.
   struct Options
   {
-    double tolerance = default_tolerance, leaf_extension = 1, leaf_curvature = 0, branch_curvature = 0;
+    double tolerance = default_tolerance, leaf_curvature = 0, branch_curvature = 0;
   };
 
-  Rough_cut_locus_builder(const TriangleMesh& tm, const Source& src, VertexPointMap vpm,
-                          VertexIndexMap vim, EdgeIndexMap eim, FaceIndexMap fim, const Options& options)
-    : tm_(tm), src_(src), vpm_(vpm), vim_(vim), eim_(eim), fim_(fim), options_(options),
+  Rough_cut_locus_builder(const TriangleMesh& tm, const Source& src, const Maps& maps, const Options& options)
+    : tm_(tm), src_(src), maps_(maps), options_(options),
       nv_(num_vertices(tm)), ne_(num_edges(tm)), nf_(num_faces(tm)), st_(r_.statistics)
   {}
 
@@ -176,7 +175,6 @@ public:
       prune_by_significance();
       prune_false_branches();
       if(!st_.fallback_single_rung && options_.leaf_curvature > 0) extend_leaves_by_curvature();
-      else if(!st_.fallback_single_rung && options_.leaf_extension < 1) extend_leaves_by_significance();
       record_dual_roles();
       span_rungs();
       close_handle_cycles();
@@ -193,9 +191,9 @@ public:
   }
 
 private:
-  std::size_t vi(vertex_descriptor v) const { return static_cast<std::size_t>(get(vim_, v)); }
-  std::size_t ei(edge_descriptor e) const { return static_cast<std::size_t>(get(eim_, e)); }
-  std::size_t fi(face_descriptor f) const { return static_cast<std::size_t>(get(fim_, f)); }
+  std::size_t vi(vertex_descriptor v) const { return static_cast<std::size_t>(get(maps_.vim, v)); }
+  std::size_t ei(edge_descriptor e) const { return static_cast<std::size_t>(get(maps_.eim, e)); }
+  std::size_t fi(face_descriptor f) const { return static_cast<std::size_t>(get(maps_.fim, f)); }
   double significance(std::size_t d) const { return r_.significance[ei(r_.dual_edges[d])]; }
   // the face of dual edge d other than f
   std::size_t across(std::size_t d, std::size_t f) const
@@ -237,7 +235,7 @@ private:
   {
     length_.resize(ne_);
     for(edge_descriptor e : edges(tm_))
-      length_[ei(e)] = distance_between(vpm_, source(e, tm_), target(e, tm_));
+      length_[ei(e)] = distance_between(maps_.vpm, source(e, tm_), target(e, tm_));
     const double inf = std::numeric_limits<double>::infinity();
     r_.distance.assign(nv_, inf);
     r_.parent.resize(nv_);
@@ -250,9 +248,9 @@ private:
     }
     boost::dijkstra_shortest_paths_no_init(
         tm_, seed_vertices.begin(), seed_vertices.end(),
-        boost::make_iterator_property_map(r_.parent.begin(), vim_),
-        boost::make_iterator_property_map(r_.distance.begin(), vim_),
-        boost::make_iterator_property_map(length_.begin(), eim_), vim_,
+        boost::make_iterator_property_map(r_.parent.begin(), maps_.vim),
+        boost::make_iterator_property_map(r_.distance.begin(), maps_.vim),
+        boost::make_iterator_property_map(length_.begin(), maps_.eim), maps_.vim,
         std::less<double>(), boost::closed_plus<double>(inf), 0.0,
         boost::default_dijkstra_visitor());
     // A straight segment from the source is a geodesic (no edge path in R^3 is
@@ -357,7 +355,7 @@ private:
     r_.total_area = 0;
     for(face_descriptor f : faces(tm_))
     {
-      area_[fi(f)] = CGAL::Polygon_mesh_processing::face_area(f, tm_, CGAL::parameters::vertex_point_map(vpm_));
+      area_[fi(f)] = CGAL::Polygon_mesh_processing::face_area(f, tm_, CGAL::parameters::vertex_point_map(maps_.vpm));
       r_.total_area += area_[fi(f)];
     }
     // The faces holding a surface-point source are no nodes of T*: the two sides
@@ -390,7 +388,7 @@ private:
   void share_curvature_among_faces()
   {
     if(!curvature_sums()) return;
-    angles_ = corner_angles(tm_, vpm_, vim_, fim_);
+    angles_ = corner_angles(tm_, maps_.vpm, maps_.vim, maps_.fim);
     curvature_share_.assign(nf_, 0.0);
     positive_share_.assign(nf_, 0.0);
     for(face_descriptor f : faces(tm_))
@@ -564,32 +562,6 @@ private:
       if(!goes_on && subtree_curvature_[d] < options_.leaf_curvature) continue;
       extension_[d] = 1;
       inside[child_face_[d]] = 2;
-    }
-  }
-
-  // The paper-free alternative (`leaf_extension`): from every leaf face of the
-  // kept structure, go on into its most significant pruned child branch while
-  // that is significant enough (one path per leaf).
-  void extend_leaves_by_significance()
-  {
-    const double extension_threshold = options_.leaf_extension * threshold_;
-    for(std::size_t f = 0; f < nf_; ++f)
-    {
-      if(kept_degree_[f] != 1) continue;
-      for(std::size_t cur = f;;)
-      {
-        std::size_t best = none;
-        for(unsigned char k = 0; k < dual_degree_[cur]; ++k)
-        {
-          const std::size_t d = dual_of_face_[cur][k];
-          if(kept_[d] || extension_[d] || false_branch_[d] || !peeled_[d] || child_face_[d] == cur) continue;
-          if(significance(d) >= extension_threshold && (best == none || significance(d) > significance(best)))
-            best = d;
-        }
-        if(best == none) break;
-        extension_[best] = 1;
-        cur = child_face_[best];
-      }
     }
   }
 
@@ -873,7 +845,7 @@ private:
         {
           const vertex_descriptor w = source(h, b.tm_);
           if(b.is_seed_[b.vi(w)]) continue;
-          const double dw = d + distance_between(b.vpm_, u, w);
+          const double dw = d + distance_between(b.maps_.vpm, u, w);
           if(dw >= reach[b.vi(w)]) continue;
           if(reach[b.vi(w)] == std::numeric_limits<double>::infinity()) touched.push_back(b.vi(w));
           reach[b.vi(w)] = dw; hops[b.vi(w)] = hops[b.vi(u)] + 1; reached_by[b.vi(w)] = h;
@@ -950,10 +922,7 @@ private:
   // the input
   const TriangleMesh& tm_;
   const Source src_;
-  const VertexPointMap vpm_;
-  const VertexIndexMap vim_;
-  const EdgeIndexMap eim_;
-  const FaceIndexMap fim_;
+  const Maps maps_;
   const Options options_;
   const std::size_t nv_, ne_, nf_;
   // the result, filled step by step
@@ -988,27 +957,29 @@ private:
   std::size_t stamp_ = 0;
 };
 
+// What every entry point does first: the parameters of stage 1 checked (a bad
+// one is reported before any work), the mesh validated, the source (a vertex or
+// a `Face_location`) made.
+template <class TriangleMesh, class SourceLocation, class NamedParameters>
+Geodesic_source<TriangleMesh> checked_source(const TriangleMesh& tm, const SourceLocation& source,
+                                             const NamedParameters& np)
+{
+  get_tolerance(np);
+  validate_triangle_mesh(tm, np);
+  return make_source(tm, source, np);
+}
+
 template <class TriangleMesh, class NamedParameters>
 Rough_cut_locus<TriangleMesh>
 rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
                      const NamedParameters& np, const std::vector<double>* field = nullptr)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const auto eim = CGAL::get_initialized_edge_index_map(tm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  typedef Rough_cut_locus_builder<TriangleMesh, std::remove_const_t<decltype(vpm)>,
-                                  std::remove_const_t<decltype(vim)>, std::remove_const_t<decltype(eim)>,
-                                  std::remove_const_t<decltype(fim)> > Builder;
+  typedef Rough_cut_locus_builder<TriangleMesh, Mesh_maps_of<TriangleMesh, NamedParameters> > Builder;
   typename Builder::Options options;
   options.tolerance = get_tolerance(np);
-  options.leaf_extension = get_leaf_extension(np);
   options.leaf_curvature = radians(get_leaf_curvature(np));
   options.branch_curvature = radians(get_branch_curvature(np));
-  return Builder(tm, src, vpm, vim, eim, fim, options).run(field);
+  return Builder(tm, src, mesh_maps(tm, np), options).run(field);
 }
 
 } // namespace internal
@@ -1049,11 +1020,6 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 ///     \cgalParamType{`double`, in [0, 720]}
 ///     \cgalParamDefault{`default_leaf_curvature` (45)}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{leaf_extension}
-///     \cgalParamDescription{with `leaf_curvature(0)`: leaves of the kept structure go on along their most significant pruned branch while it holds this fraction of the tolerance}
-///     \cgalParamType{`double`, in [0, 1]}
-///     \cgalParamDefault{`default_leaf_extension` (1: no extension)}
-///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and a 3D point as value type}
@@ -1085,9 +1051,7 @@ compute_rough_cut_locus(const TriangleMesh& tm,
                         typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  internal::get_tolerance(np); // a bad parameter is reported before any work
-  validate_triangle_mesh(tm, np);
-  return internal::rough_cut_locus_impl(tm, make_source(tm, source, np), np);
+  return internal::rough_cut_locus_impl(tm, internal::checked_source(tm, source, np), np);
 }
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -1107,9 +1071,7 @@ compute_rough_cut_locus(const TriangleMesh& tm,
                                         std::array<FT, 3> >& source,
                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  internal::get_tolerance(np);
-  validate_triangle_mesh(tm, np);
-  return internal::rough_cut_locus_impl(tm, make_source(tm, source, np), np);
+  return internal::rough_cut_locus_impl(tm, internal::checked_source(tm, source, np), np);
 }
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -1143,18 +1105,16 @@ OutputIterator cut_graph_polylines(const TriangleMesh& tm, const Rough_cut_locus
                                    OutputIterator out,
                                    const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto maps = internal::mesh_maps(tm, np);
+  const auto& vpm = maps.vpm;
+  const auto& vim = maps.vim;
   std::vector<vertex_descriptor> vertex_of(num_vertices(tm));
   for(vertex_descriptor v : vertices(tm)) vertex_of[get(vim, v)] = v;
   std::vector<std::pair<std::size_t, std::size_t> > graph;
   for(const auto& e : rcl.cut_edges)
     graph.emplace_back(get(vim, source(e, tm)), get(vim, target(e, tm)));
-  typedef typename boost::property_traits<decltype(vpm)>::value_type Point;
+  typedef typename decltype(maps)::Point Point;
   for(const auto& chain : internal::graph_to_chains(num_vertices(tm), graph))
   {
     std::vector<Point> polyline;

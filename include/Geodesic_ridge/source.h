@@ -8,6 +8,7 @@
 #define GEODESIC_RIDGE_SOURCE_H
 
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/mesh_maps.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -217,7 +218,7 @@ Geodesic_source<TriangleMesh>
 make_source(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor v,
             const NamedParameters& np)
 {
-  return make_vertex_source(tm, v, CGAL::get_initialized_vertex_index_map(tm, np));
+  return make_vertex_source(tm, v, internal::mesh_maps(tm, np).vim);
 }
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -257,12 +258,8 @@ make_source(const TriangleMesh& tm,
             const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor, std::array<FT, 3> >& loc,
             const NamedParameters& np)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  return make_face_source(tm, loc, vpm, CGAL::get_initialized_face_index_map(tm, np),
-                          CGAL::get_initialized_vertex_index_map(tm, np));
+  const auto maps = internal::mesh_maps(tm, np);
+  return make_face_source(tm, loc, maps.vpm, maps.fim, maps.vim);
 }
 
 } // namespace Geodesic_ridge

@@ -56,6 +56,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <iterator>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -720,11 +721,7 @@ Ridge_accuracy<Point_3> ridge_accuracy(const Reference_ridge<Point_3>& ref,
                                        const Ridge_accuracy_options& opt = Ridge_accuracy_options())
 {
   std::vector<std::vector<Point_3> > pls;
-  for(const auto& pl : polylines)
-  {
-    pls.emplace_back();
-    for(const auto& p : pl) pls.back().push_back(p.point);
-  }
+  Geodesic_ridge::ridge_polyline_points(polylines, std::back_inserter(pls));
   return ridge_accuracy(ref, pls, ref_opt, opt);
 }
 

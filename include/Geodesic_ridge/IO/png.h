@@ -10,6 +10,9 @@
 
 #include <Geodesic_ridge/exceptions.h>
 
+#include <CGAL/Bbox_2.h>
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/number_utils.h>
 #include <boost/graph/graph_traits.hpp>
 
@@ -66,105 +69,148 @@ inline void write_rgb_png(const std::string& filename, int w, int h, const std::
 
 // Draws the mesh, coloured by colour(halfedge of the face, w0, w1, w2, shade)
 // at each pixel (w: the weights of source(h), target(h), target(next(h))), and
-// the curves over it.
+// the curves over it, from two opposite views side by side. Geometry in the
+// kernel's types (the mesh's points converted to doubles).
+template <class TriangleMesh, class VertexPointMap, class Colour>
+class Png_renderer
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef K::Point_3 Point_3;
+  typedef K::Vector_3 Vector_3;
+  typedef K::Point_2 Point_2;
+
+public:
+  Png_renderer(const TriangleMesh& tm, VertexPointMap vpm, int size, const Colour& colour)
+    : tm_(tm), vpm_(vpm), size_(size), colour_(colour), rgb_(static_cast<std::size_t>(3 * 2 * size * size), 255),
+      depth_(static_cast<std::size_t>(2 * size * size), std::numeric_limits<double>::infinity())
+  {
+    CGAL::Bbox_3 box;
+    for(auto v : vertices(tm)) box += point(get(vpm, v)).bbox();
+    center_ = Point_3((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2, (box.zmin() + box.zmax()) / 2);
+    radius_ = std::sqrt(CGAL::squared_distance(Point_3(box.xmin(), box.ymin(), box.zmin()),
+                                               Point_3(box.xmax(), box.ymax(), box.zmax()))) / 2;
+  }
+
+  // view `side` (0 left, 1 right) looking along `direction`
+  template <class Curve_point>
+  void draw(int side, const Vector_3& direction, const std::vector<Png_curves<Curve_point> >& curves)
+  {
+    look_ = direction / std::sqrt(direction.squared_length());
+    const Vector_3 up0 = std::abs(look_.y()) < 0.9 ? Vector_3(0, 1, 0) : Vector_3(0, 0, 1);
+    right_ = CGAL::cross_product(look_, up0);
+    right_ = right_ / std::sqrt(right_.squared_length());
+    up_ = CGAL::cross_product(right_, look_);
+    x0_ = side * size_;
+    for(auto f : faces(tm_)) draw_face(halfedge(f, tm_));
+    for(const auto& c : curves)
+      for(const auto& pl : c.polylines)
+        for(std::size_t i = 0; i + 1 < pl.size(); ++i) draw_segment(point(pl[i]), point(pl[i + 1]), c);
+  }
+
+  void write(const std::string& filename) const { write_rgb_png(filename, 2 * size_, size_, rgb_); }
+
+private:
+  template <class P>
+  static Point_3 point(const P& p)
+  {
+    return Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+
+  // screen position and depth
+  std::pair<Point_2, double> project(const Point_3& p) const
+  {
+    const Vector_3 q = p - center_;
+    const double scale = 0.47 * size_ / radius_;
+    return {Point_2(x0_ + size_ / 2.0 + (q * right_) * scale, size_ / 2.0 - (q * up_) * scale), q * look_};
+  }
+
+  void draw_face(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h)
+  {
+    const Point_3 p[3] = {point(get(vpm_, source(h, tm_))), point(get(vpm_, target(h, tm_))),
+                          point(get(vpm_, target(next(h, tm_), tm_)))};
+    const Vector_3 n = CGAL::normal(p[0], p[1], p[2]);
+    if(n == CGAL::NULL_VECTOR) return;
+    const double shade = 0.35 + 0.6 * std::abs(n * look_) / std::sqrt(n.squared_length());
+    std::array<std::pair<Point_2, double>, 3> s = {{project(p[0]), project(p[1]), project(p[2])}};
+    const double area = CGAL::area(s[0].first, s[1].first, s[2].first);
+    if(area == 0) return;
+    const CGAL::Bbox_2 box = s[0].first.bbox() + s[1].first.bbox() + s[2].first.bbox();
+    const int xmin = (std::max)(x0_, static_cast<int>(std::floor(box.xmin())));
+    const int xmax = (std::min)(x0_ + size_ - 1, static_cast<int>(std::ceil(box.xmax())));
+    const int ymin = (std::max)(0, static_cast<int>(std::floor(box.ymin())));
+    const int ymax = (std::min)(size_ - 1, static_cast<int>(std::ceil(box.ymax())));
+    for(int y = ymin; y <= ymax; ++y)
+      for(int x = xmin; x <= xmax; ++x)
+      {
+        const Point_2 px(x + 0.5, y + 0.5);
+        const double w0 = CGAL::area(px, s[1].first, s[2].first) / area;
+        const double w1 = CGAL::area(s[0].first, px, s[2].first) / area;
+        const double w2 = 1 - w0 - w1;
+        if(w0 < 0 || w1 < 0 || w2 < 0) continue;
+        const double z = w0 * s[0].second + w1 * s[1].second + w2 * s[2].second;
+        const std::size_t i = pixel(x, y);
+        if(z >= depth_[i]) continue;
+        depth_[i] = z;
+        set(i, colour_(h, w0, w1, w2, shade));
+      }
+  }
+
+  // a curve segment, drawn where the surface does not hide it (a small depth
+  // offset keeps curves on the surface visible)
+  template <class Curves>
+  void draw_segment(const Point_3& a, const Point_3& b, const Curves& c)
+  {
+    const auto [pa, za] = project(a);
+    const auto [pb, zb] = project(b);
+    const double offset = 0.01 * radius_;
+    const int steps = 1 + static_cast<int>((std::max)(std::abs(pb.x() - pa.x()), std::abs(pb.y() - pa.y())));
+    for(int k = 0; k <= steps; ++k)
+    {
+      const double t = double(k) / steps;
+      const Point_2 q = pa + t * (pb - pa);
+      const double z = za + t * (zb - za);
+      for(int dy = -c.width_pixels / 2; dy <= c.width_pixels / 2; ++dy)
+        for(int dx = -c.width_pixels / 2; dx <= c.width_pixels / 2; ++dx)
+        {
+          const int X = static_cast<int>(q.x()) + dx, Y = static_cast<int>(q.y()) + dy;
+          if(X < x0_ || X >= x0_ + size_ || Y < 0 || Y >= size_) continue;
+          const std::size_t i = pixel(X, Y);
+          if(z - offset <= depth_[i]) set(i, c.rgb);
+        }
+    }
+  }
+
+  std::size_t pixel(int x, int y) const { return static_cast<std::size_t>(y * 2 * size_ + x); }
+  void set(std::size_t i, const std::array<unsigned char, 3>& c)
+  {
+    rgb_[3 * i] = c[0];
+    rgb_[3 * i + 1] = c[1];
+    rgb_[3 * i + 2] = c[2];
+  }
+
+  const TriangleMesh& tm_;
+  const VertexPointMap vpm_;
+  const int size_;
+  const Colour& colour_;
+  std::vector<unsigned char> rgb_;
+  std::vector<double> depth_;
+  Point_3 center_;
+  double radius_ = 1;
+  Vector_3 look_, right_, up_;
+  int x0_ = 0;
+};
+
 template <class TriangleMesh, class VertexPointMap, class Point_3, class Colour>
 void render(const std::string& filename, const TriangleMesh& tm, VertexPointMap vpm,
             const std::vector<Png_curves<Point_3> >& curves, int size, std::array<double, 3> view,
             const Colour& colour)
 {
-  typedef std::array<double, 3> V3;
-  auto sub = [](const V3& a, const V3& b) { return V3{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; };
-  auto cross = [](const V3& a, const V3& b) {
-    return V3{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-  };
-  auto dot = [](const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-  auto unit = [&](V3 a) { const double l = std::sqrt(dot(a, a)); for(double& x : a) x /= l; return a; };
-  auto to3 = [](const auto& p) { return V3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}}; };
-
-  V3 lo = {{1e300, 1e300, 1e300}}, hi = {{-1e300, -1e300, -1e300}};
-  for(auto v : vertices(tm))
-  {
-    const V3 p = to3(get(vpm, v));
-    for(int k = 0; k < 3; ++k) { lo[k] = std::min(lo[k], p[k]); hi[k] = std::max(hi[k], p[k]); }
-  }
-  const V3 center = {{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2}};
-  const double radius = std::sqrt(dot(sub(hi, lo), sub(hi, lo))) / 2;
-  const int W = 2 * size, H = size;
-  std::vector<unsigned char> rgb(static_cast<std::size_t>(3 * W * H), 255);
-  std::vector<double> depth(static_cast<std::size_t>(W * H), std::numeric_limits<double>::infinity());
-
-  for(int side = 0; side < 2; ++side)
-  {
-    const V3 d = unit(side == 0 ? view : V3{{-view[0], -view[1], -view[2]}}); // looking direction
-    const V3 up0 = std::abs(d[1]) < 0.9 ? V3{{0, 1, 0}} : V3{{0, 0, 1}};
-    const V3 right = unit(cross(d, up0)), up = cross(right, d);
-    const int x0 = side * size;
-    auto project = [&](const V3& p, double& sx, double& sy, double& sz) {
-      const V3 q = sub(p, center);
-      sx = x0 + size / 2.0 + dot(q, right) / radius * size * 0.47;
-      sy = size / 2.0 - dot(q, up) / radius * size * 0.47;
-      sz = dot(q, d);
-    };
-    for(auto f : faces(tm))
-    {
-      const auto h = halfedge(f, tm);
-      const V3 p[3] = {to3(get(vpm, source(h, tm))), to3(get(vpm, target(h, tm))),
-                       to3(get(vpm, target(next(h, tm), tm)))};
-      V3 n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
-      const double nl = std::sqrt(dot(n, n));
-      if(nl == 0) continue;
-      for(double& x : n) x /= nl;
-      const double shade = 0.35 + 0.6 * std::abs(dot(n, d));
-      double sx[3], sy[3], sz[3];
-      for(int k = 0; k < 3; ++k) project(p[k], sx[k], sy[k], sz[k]);
-      const int xmin = std::max(x0, static_cast<int>(std::floor(std::min({sx[0], sx[1], sx[2]}))));
-      const int xmax = std::min(x0 + size - 1, static_cast<int>(std::ceil(std::max({sx[0], sx[1], sx[2]}))));
-      const int ymin = std::max(0, static_cast<int>(std::floor(std::min({sy[0], sy[1], sy[2]}))));
-      const int ymax = std::min(H - 1, static_cast<int>(std::ceil(std::max({sy[0], sy[1], sy[2]}))));
-      const double area = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sx[2] - sx[0]) * (sy[1] - sy[0]);
-      if(area == 0) continue;
-      for(int y = ymin; y <= ymax; ++y)
-        for(int x = xmin; x <= xmax; ++x)
-        {
-          const double px = x + 0.5, py = y + 0.5;
-          const double w0 = ((sx[1] - px) * (sy[2] - py) - (sx[2] - px) * (sy[1] - py)) / area;
-          const double w1 = ((sx[2] - px) * (sy[0] - py) - (sx[0] - px) * (sy[2] - py)) / area;
-          const double w2 = 1 - w0 - w1;
-          if(w0 < 0 || w1 < 0 || w2 < 0) continue;
-          const double z = w0 * sz[0] + w1 * sz[1] + w2 * sz[2];
-          const std::size_t i = static_cast<std::size_t>(y * W + x);
-          if(z >= depth[i]) continue;
-          depth[i] = z;
-          const auto c = colour(h, w0, w1, w2, shade);
-          rgb[3 * i] = c[0]; rgb[3 * i + 1] = c[1]; rgb[3 * i + 2] = c[2];
-        }
-    }
-    const double offset = 0.01 * radius;
-    for(const auto& c : curves)
-      for(const auto& pl : c.polylines)
-        for(std::size_t i = 0; i + 1 < pl.size(); ++i)
-        {
-          double ax, ay, az, bx, by, bz;
-          project(to3(pl[i]), ax, ay, az);
-          project(to3(pl[i + 1]), bx, by, bz);
-          const int steps = 1 + static_cast<int>(std::max(std::abs(bx - ax), std::abs(by - ay)));
-          for(int s = 0; s <= steps; ++s)
-          {
-            const double t = double(s) / steps;
-            const double x = ax + t * (bx - ax), y = ay + t * (by - ay), z = az + t * (bz - az);
-            for(int dy = -c.width_pixels / 2; dy <= c.width_pixels / 2; ++dy)
-              for(int dx = -c.width_pixels / 2; dx <= c.width_pixels / 2; ++dx)
-              {
-                const int X = static_cast<int>(x) + dx, Y = static_cast<int>(y) + dy;
-                if(X < x0 || X >= x0 + size || Y < 0 || Y >= H) continue;
-                const std::size_t i2 = static_cast<std::size_t>(Y * W + X);
-                if(z - offset > depth[i2]) continue;
-                rgb[3 * i2] = c.rgb[0]; rgb[3 * i2 + 1] = c.rgb[1]; rgb[3 * i2 + 2] = c.rgb[2];
-              }
-          }
-        }
-  }
-  write_rgb_png(filename, W, H, rgb);
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3 Vector_3;
+  Png_renderer<TriangleMesh, VertexPointMap, Colour> renderer(tm, vpm, size, colour);
+  const Vector_3 direction(view[0], view[1], view[2]);
+  renderer.draw(0, direction, curves);
+  renderer.draw(1, -direction, curves);
+  renderer.write(filename);
 }
 
 } // namespace internal_png

@@ -7,6 +7,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace Geodesic_ridge {
@@ -49,6 +50,28 @@ private:
   VertexPointMap vpm_;
   std::vector<face_descriptor> face_of_;
 };
+
+// Per face of M (by index) and edge k (corner k to k+1): the face across it and
+// that edge's index there.
+typedef std::vector<std::array<std::pair<std::size_t, int>, 3> > Faces_across;
+template <class TriangleMesh, class FaceIndexMap>
+Faces_across faces_across(const TriangleMesh& tm, FaceIndexMap fim)
+{
+  Faces_across across(num_faces(tm));
+  for(auto f : faces(tm))
+  {
+    auto h = halfedge(f, tm);
+    for(int k = 0; k < 3; ++k, h = next(h, tm))
+    {
+      const auto o = opposite(h, tm);
+      const auto g = face(o, tm);
+      int kg = 0;
+      for(auto x = halfedge(g, tm); x != o; x = next(x, tm)) ++kg;
+      across[get(fim, f)][k] = {static_cast<std::size_t>(get(fim, g)), kg};
+    }
+  }
+  return across;
+}
 
 } // namespace internal
 } // namespace Geodesic_ridge

@@ -6,6 +6,9 @@
 #ifndef GEODESIC_RIDGE_SOLVERS_EXACT_SOLVER_H
 #define GEODESIC_RIDGE_SOLVERS_EXACT_SOLVER_H
 
+#include <Geodesic_ridge/internal/corner_angles.h>
+#include <Geodesic_ridge/internal/mesh_maps.h>
+
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -137,10 +140,7 @@ private:
   template <class TriangleMesh, class NamedParameters, class F>
   static void with_shortest_paths(const TriangleMesh& tm, const NamedParameters& np, const F& f)
   {
-    using CGAL::parameters::choose_parameter;
-    using CGAL::parameters::get_parameter;
-    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, tm));
+    const auto vpm = internal::mesh_maps(tm, np).vpm;
     typedef std::decay_t<decltype(vpm)> Vertex_point_map;
     typedef typename CGAL::Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel K;
     CGAL::Surface_mesh_shortest_path<CGAL::Surface_mesh_shortest_path_traits<K, TriangleMesh>, CGAL::Default,
@@ -191,64 +191,10 @@ private:
   static void face_cones(const TriangleMesh& tm, Solver& sp, std::vector<Face_cone>& cones, const Wanted& wanted,
                          const std::vector<std::array<double, 3> >& samples)
   {
-    typedef typename boost::graph_traits<TriangleMesh> GT;
     typedef typename Solver::Point_3 Point_3;
     const auto vpm = get(CGAL::vertex_point, tm);
     const auto fim = get(CGAL::face_index, tm);
-    // thrown at the first bend: the visitor of Surface_mesh_shortest_path
-    // cannot stop a walk, and the rest of the path (to the source) is not needed
-    struct Apex_found {};
-    std::vector<char> bends(num_vertices(tm), 1);
-    {
-      std::vector<double> angle_sum(num_vertices(tm), 0);
-      const auto vim = get(CGAL::vertex_index, tm);
-      for(auto h : halfedges(tm))
-      {
-        if(is_border(h, tm)) continue;
-        const Point_3& a = get(vpm, source(h, tm));
-        const Point_3& b = get(vpm, target(h, tm));
-        const Point_3& c = get(vpm, target(next(h, tm), tm));
-        const auto u = a - b, w = c - b;
-        angle_sum[get(vim, target(h, tm))] += std::atan2(std::sqrt(CGAL::to_double(CGAL::cross_product(u, w).squared_length())),
-                                             CGAL::to_double(u * w));
-      }
-      for(auto v : vertices(tm))
-        bends[get(vim, v)] = is_border(v, tm) || std::abs(angle_sum[get(vim, v)] - 2 * CGAL_PI) > 1e-9 * 2 * CGAL_PI;
-    }
-    struct First_bend
-    {
-      Solver& sp;
-      const std::vector<char>& bends;
-      typename boost::property_map<TriangleMesh, CGAL::vertex_index_t>::const_type vim;
-      Point_3 last;              // the previous point of the path
-      bool have_direction;
-      Point_3 towards;           // a point of the first straight piece
-      double length;             // of the path so far
-      double apex_distance;      // the distance at the first bend
-      void step(const Point_3& p)
-      {
-        length += std::sqrt(CGAL::to_double(CGAL::squared_distance(last, p)));
-        last = p;
-        if(!have_direction) { towards = p; have_direction = true; }
-      }
-      void operator()(typename GT::halfedge_descriptor h, typename Solver::FT t) { step(sp.point(h, t)); }
-      void operator()(typename GT::vertex_descriptor v)
-      {
-        step(sp.point(v));
-        const double d = CGAL::to_double(sp.shortest_distance_to_source_points(v).first);
-        if(!bends[get(vim, v)] && d > 0) return; // straight through a flat vertex
-        apex_distance = d;
-        throw Apex_found();
-      }
-      void operator()(typename GT::face_descriptor f, typename Solver::Barycentric_coordinates b)
-      {
-        const Point_3 p = sp.point(f, b);
-        if(p == last && length == 0 && !have_direction) return; // the query point itself
-        step(p);
-        apex_distance = 0; // the source point
-        throw Apex_found();
-      }
-    };
+    const std::vector<char> bends = bending_vertices(tm);
     const std::size_t S = samples.size();
     cones.assign(S * num_faces(tm), Face_cone());
     for(auto f : faces(tm))
@@ -256,28 +202,93 @@ private:
       if(!wanted(static_cast<std::size_t>(get(fim, f)))) continue;
       const auto h = halfedge(f, tm);
       const Point_3 p[3] = {get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm))};
-      for(std::size_t i = 0; i < S; ++i)
-      {
-        const std::array<double, 3>& sb = samples[i];
-        const typename Solver::Barycentric_coordinates at = {{sb[0], sb[1], sb[2]}};
-        const Point_3 q = sp.point(f, at);
-        First_bend bend{sp, bends, get(CGAL::vertex_index, tm), q, false, q, 0, 0};
-        Face_cone& cone = cones[S * get(fim, f) + i];
-        cone.apex = sb;
-        try
-        {
-          // no apex found: no path (another component), or a source at q
-          cone.offset = CGAL::to_double(sp.shortest_path_sequence_to_source_points(f, at, bend).first);
-          continue;
-        }
-        catch(const Apex_found&) {}
-        const auto w = bend.towards - q;
-        const double wl = std::sqrt(CGAL::to_double(w.squared_length()));
-        cone.offset = bend.apex_distance;
-        if(wl == 0) continue; // the sample is the apex
-        cone.apex = barycentric_in_plane(p, q + w * bend.length / wl);
-      }
+      for(std::size_t i = 0; i < S; ++i) cones[S * get(fim, f) + i] = cone_at(tm, sp, bends, f, p, samples[i]);
     }
+  }
+
+  // The vertices where a shortest path may bend: border vertices and those
+  // whose angle sum is not 2π (within 1e-9: on a lattice, paths meet flat
+  // vertices exactly and go straight through).
+  template <class TriangleMesh>
+  static std::vector<char> bending_vertices(const TriangleMesh& tm)
+  {
+    const auto vim = get(CGAL::vertex_index, tm);
+    const internal::Corner_angles angles =
+        internal::corner_angles(tm, get(CGAL::vertex_point, tm), vim, get(CGAL::face_index, tm));
+    std::vector<char> bends(num_vertices(tm), 1);
+    for(auto v : vertices(tm))
+      bends[get(vim, v)] = is_border(v, tm) || std::abs(angles.curvature(get(vim, v))) > 1e-9 * 2 * CGAL_PI;
+    return bends;
+  }
+
+  // thrown at the first bend: the visitor of Surface_mesh_shortest_path
+  // cannot stop a walk, and the rest of the path (to the source) is not needed
+  struct Apex_found {};
+
+  // A visitor of the path from a sample point that stops at its first bend.
+  template <class TriangleMesh, class Solver>
+  struct First_bend
+  {
+    typedef typename Solver::Point_3 Point_3;
+    typedef boost::graph_traits<TriangleMesh> GT;
+    Solver& sp;
+    const std::vector<char>& bends;
+    typename boost::property_map<TriangleMesh, CGAL::vertex_index_t>::const_type vim;
+    Point_3 last;              // the previous point of the path
+    bool have_direction;
+    Point_3 towards;           // a point of the first straight piece
+    double length;             // of the path so far
+    double apex_distance;      // the distance at the first bend
+    void step(const Point_3& p)
+    {
+      length += std::sqrt(CGAL::to_double(CGAL::squared_distance(last, p)));
+      last = p;
+      if(!have_direction) { towards = p; have_direction = true; }
+    }
+    void operator()(typename GT::halfedge_descriptor h, typename Solver::FT t) { step(sp.point(h, t)); }
+    void operator()(typename GT::vertex_descriptor v)
+    {
+      step(sp.point(v));
+      const double d = CGAL::to_double(sp.shortest_distance_to_source_points(v).first);
+      if(!bends[get(vim, v)] && d > 0) return; // straight through a flat vertex
+      apex_distance = d;
+      throw Apex_found();
+    }
+    void operator()(typename GT::face_descriptor f, typename Solver::Barycentric_coordinates b)
+    {
+      const Point_3 p = sp.point(f, b);
+      if(p == last && length == 0 && !have_direction) return; // the query point itself
+      step(p);
+      apex_distance = 0; // the source point
+      throw Apex_found();
+    }
+  };
+
+  // The cone of face f (corners p) at the sample point of barycentric sb.
+  template <class TriangleMesh, class Solver>
+  static Face_cone cone_at(const TriangleMesh& tm, Solver& sp, const std::vector<char>& bends,
+                           typename boost::graph_traits<TriangleMesh>::face_descriptor f,
+                           const typename Solver::Point_3 (&p)[3], const std::array<double, 3>& sb)
+  {
+    typedef typename Solver::Point_3 Point_3;
+    const typename Solver::Barycentric_coordinates at = {{sb[0], sb[1], sb[2]}};
+    const Point_3 q = sp.point(f, at);
+    First_bend<TriangleMesh, Solver> bend{sp, bends, get(CGAL::vertex_index, tm), q, false, q, 0, 0};
+    Face_cone cone;
+    cone.apex = sb;
+    try
+    {
+      // no apex found: no path (another component), or a source at q
+      cone.offset = CGAL::to_double(sp.shortest_path_sequence_to_source_points(f, at, bend).first);
+      return cone;
+    }
+    catch(const Apex_found&) {}
+    const auto w = bend.towards - q;
+    const double wl = std::sqrt(CGAL::to_double(w.squared_length()));
+    cone.offset = bend.apex_distance;
+    if(wl == 0) return cone; // the sample is the apex
+    cone.apex = barycentric_in_plane(p, q + w * bend.length / wl);
+    return cone;
   }
 
   // Barycentric coordinates of x (in the plane of triangle p) in the triangle.

@@ -8,8 +8,10 @@
 #ifndef GEODESIC_RIDGE_SOLVERS_FAST_MARCHING_SOLVER_H
 #define GEODESIC_RIDGE_SOLVERS_FAST_MARCHING_SOLVER_H
 
+#include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/source.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -25,44 +27,44 @@
 namespace Geodesic_ridge {
 namespace internal {
 
+// The kernel of the unfoldings: the mesh's points as doubles.
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Fast_marching_kernel;
+
 // The distance at C from a planar front that has value ta at A and tb at B,
 // if the front's ray through C crosses the segment AB (upwind); otherwise the
 // better of the two edge paths through A or B.
-inline double fast_marching_update(const std::array<double, 3>& a, double ta, const std::array<double, 3>& b,
-                                   double tb, const std::array<double, 3>& c)
+inline double fast_marching_update(const Fast_marching_kernel::Point_3& a, double ta,
+                                   const Fast_marching_kernel::Point_3& b, double tb,
+                                   const Fast_marching_kernel::Point_3& c)
 {
-  const std::array<double, 3> ab = {{b[0] - a[0], b[1] - a[1], b[2] - a[2]}};
-  const std::array<double, 3> ac = {{c[0] - a[0], c[1] - a[1], c[2] - a[2]}};
-  const std::array<double, 3> bc = {{c[0] - b[0], c[1] - b[1], c[2] - b[2]}};
-  auto dot = [](const std::array<double, 3>& x, const std::array<double, 3>& y) {
-    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
-  };
-  const double via_edges = std::min(ta + std::sqrt(dot(ac, ac)), tb + std::sqrt(dot(bc, bc)));
-  const double len = std::sqrt(dot(ab, ab));
+  typedef Fast_marching_kernel K;
+  const K::Vector_3 ab = b - a, ac = c - a;
+  const double via_edges = (std::min)(ta + std::sqrt(ac.squared_length()), tb + std::sqrt(CGAL::squared_distance(b, c)));
+  const double len = std::sqrt(ab.squared_length());
   if(!(len > 0)) return via_edges;
-  // C laid out in the plane with A = (0, 0), B = (len, 0), C above the x axis
-  const double cx = dot(ac, ab) / len;
-  const double cy2 = dot(ac, ac) - cx * cx;
+  // the triangle laid out in the plane with A = (0, 0), B = (len, 0), C above AB
+  const double cx = ac * ab / len;
+  const double cy2 = ac.squared_length() - cx * cx;
   if(!(cy2 > 0)) return via_edges;
-  const double cy = std::sqrt(cy2);
+  const K::Point_2 A(0, 0), C(cx, std::sqrt(cy2));
+  const K::Segment_2 AB(A, K::Point_2(len, 0));
   // circular front: a virtual source S below AB at distances ta, tb from A, B
   // (exact in a flat region around one point source)
   const double sx = (ta * ta - tb * tb + len * len) / (2 * len);
   const double sy2 = ta * ta - sx * sx;
   if(sy2 >= 0)
   {
-    const double sy = -std::sqrt(sy2);
-    const double x0 = sx + (cx - sx) * (-sy) / (cy - sy); // where SC crosses AB
-    if(x0 >= 0 && x0 <= len) return std::min(via_edges, std::sqrt((cx - sx) * (cx - sx) + (cy - sy) * (cy - sy)));
-    return via_edges;
+    const K::Point_2 S(sx, -std::sqrt(sy2));
+    if(!CGAL::do_intersect(K::Segment_2(S, C), AB)) return via_edges;
+    return (std::min)(via_edges, std::sqrt(CGAL::squared_distance(S, C)));
   }
-  // no such S (ta, tb, |AB| violate the triangle inequality): a planar front
-  const double gx = (tb - ta) / len; // the front's unit direction g, seen along AB
+  // no such S (ta, tb, |AB| violate the triangle inequality): a planar front of
+  // unit direction g, which reaches C if its ray back from C crosses AB
+  const double gx = (tb - ta) / len;
   if(!(std::abs(gx) < 1)) return via_edges;
-  const double gy = std::sqrt(1 - gx * gx);
-  const double x0 = cx - gx * cy / gy; // where the ray through C crosses AB
-  if(!(x0 >= 0 && x0 <= len)) return via_edges;
-  return std::min(via_edges, ta + gx * cx + gy * cy);
+  const K::Vector_2 g(gx, std::sqrt(1 - gx * gx));
+  if(!CGAL::do_intersect(K::Ray_2(C, -g), AB)) return via_edges;
+  return (std::min)(via_edges, ta + g * (C - A));
 }
 
 /// Fast-marching distances from `seeds` (vertex index, initial distance) over
@@ -78,12 +80,12 @@ void fast_marching_distances(const TriangleMesh& tm, const VertexPointMap& vpm, 
   typedef typename GT::vertex_descriptor vertex_descriptor;
   const double inf = std::numeric_limits<double>::infinity();
   const std::size_t nv = num_vertices(tm);
-  std::vector<std::array<double, 3> > p(nv);
+  std::vector<Fast_marching_kernel::Point_3> p(nv);
   std::vector<vertex_descriptor> vertex_of(nv);
   for(vertex_descriptor v : vertices(tm))
   {
     const auto& q = get(vpm, v);
-    p[get(vim, v)] = {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+    p[get(vim, v)] = Fast_marching_kernel::Point_3(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
     vertex_of[get(vim, v)] = v;
   }
   distance.assign(nv, inf);
@@ -108,9 +110,7 @@ void fast_marching_distances(const TriangleMesh& tm, const VertexPointMap& vpm, 
     for(auto h : CGAL::halfedges_around_target(vertex_of[v], tm))
     {
       const std::size_t a = get(vim, source(h, tm));
-      relax(a, distance[v] + std::sqrt((p[a][0] - p[v][0]) * (p[a][0] - p[v][0]) +
-                                       (p[a][1] - p[v][1]) * (p[a][1] - p[v][1]) +
-                                       (p[a][2] - p[v][2]) * (p[a][2] - p[v][2])));
+      relax(a, distance[v] + std::sqrt(CGAL::squared_distance(p[a], p[v])));
       if(is_border(h, tm)) continue;
       // the face (a, v, b): a front known at v and one other corner updates the third
       const std::size_t b = get(vim, target(next(h, tm), tm));
@@ -165,14 +165,10 @@ private:
   template <class TriangleMesh, class Seeds, class VertexDistanceMap, class NamedParameters>
   static void run(const TriangleMesh& tm, const Seeds& seeds, VertexDistanceMap distance, const NamedParameters& np)
   {
-    using CGAL::parameters::choose_parameter;
-    using CGAL::parameters::get_parameter;
-    const auto vim = CGAL::get_initialized_vertex_index_map(tm);
-    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, tm));
+    const auto maps = internal::mesh_maps(tm, np);
     std::vector<double> d;
-    internal::fast_marching_distances(tm, vpm, vim, seeds, d);
-    for(auto v : vertices(tm)) put(distance, v, d[get(vim, v)]);
+    internal::fast_marching_distances(tm, maps.vpm, maps.vim, seeds, d);
+    for(auto v : vertices(tm)) put(distance, v, d[get(maps.vim, v)]);
   }
 };
 
