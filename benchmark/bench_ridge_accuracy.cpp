@@ -8,7 +8,11 @@
 //   bench_ridge_accuracy [--max-faces N] [--tolerance T] [--recall-tolerance T]
 //                        [--sources-per-mesh N] [--random-sources R] [--seed S]
 //                        [--solver exact|fmm|cone|both|exact+cone] [--diagnose] [--no-reference] [--source-vertex V]...
-//                        [--spacing S] [--min-jump DEG] [--outliers] [pipeline options] [MESH ...]
+//                        [--spacing S] [--min-jump DEG] [--outliers] [--hole R] [pipeline options] [MESH ...]
+//
+// --hole R: surfaces with a border. Each mesh loses the faces with a corner
+// within R times its bounding box diagonal of its last vertex (one more border
+// loop; the name gets "_hole") before the sources are drawn.
 //
 // Solver 'cone': the exact solver with the cone field, measuring the cone
 // ridge (`Ridge_curve::cone_polylines`); 'exact+cone' runs both.
@@ -54,6 +58,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <algorithm>
 #include <chrono>
@@ -121,6 +126,22 @@ struct Pair_result
 
 double quantile(std::vector<double> v, double q) { return GT::internal::quantile(std::move(v), q); }
 
+// Removes the faces with a corner within `radius` (times the bounding box
+// diagonal) of the last vertex: a hole, one more border loop.
+void cut_hole(Mesh& mesh, double radius)
+{
+  const CGAL::Bbox_3 box = CGAL::bbox_3(mesh.points().begin(), mesh.points().end());
+  const double r2 = radius * radius * (CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                       CGAL::square(box.zmax() - box.zmin()));
+  const auto centre = mesh.point(*std::prev(mesh.vertices().end()));
+  std::vector<Mesh::Face_index> doomed;
+  for(auto f : mesh.faces())
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      if(CGAL::squared_distance(mesh.point(v), centre) <= r2) { doomed.push_back(f); break; }
+  for(auto f : doomed) CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
+  mesh.collect_garbage();
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -131,6 +152,7 @@ int main(int argc, char** argv)
   double fmm_tolerance = 0.01;
   int fmm_skip_rings = 3;
   bool outliers = false, diagnose = false, reference = true;
+  double hole = 0;
   std::vector<std::string> solvers = {"exact", "fmm"};
   GT::Reference_ridge_options ref_opt;
   std::vector<std::string> files;
@@ -162,6 +184,7 @@ int main(int argc, char** argv)
     else if(a == "--fmm-tolerance" && i + 1 < argc) fmm_tolerance = std::stod(argv[++i]);
     else if(a == "--fmm-skip-rings" && i + 1 < argc) fmm_skip_rings = std::stoi(argv[++i]);
     else if(a == "--no-reference") reference = false;
+    else if(a == "--hole" && i + 1 < argc) hole = std::stod(argv[++i]);
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
     else files.push_back(a);
   }
@@ -190,9 +213,11 @@ int main(int argc, char** argv)
     try { Geodesic_ridge::IO::read_triangle_mesh(file, mesh); }
     catch(const Geodesic_ridge::Error& e) { std::cerr << file << ": " << e.what() << "\n"; continue; }
     if(mesh.number_of_faces() > max_faces) continue;
+    if(hole > 0) cut_hole(mesh, hole);
+    const long loops = hole > 0 ? 1 : 0; // (the meshes measured are closed before the hole)
     const long chi = long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) + long(mesh.number_of_faces());
-    const long genus = (2 - chi) / 2;
-    const std::string mesh_name = fs::path(file).stem().string();
+    const long genus = (2 - chi - loops) / 2;
+    const std::string mesh_name = fs::path(file).stem().string() + (hole > 0 ? "_hole" : "");
 
     std::vector<Source> sources = sources_of(mesh, per_mesh, random_sources, seed);
     if(!fixed_sources.empty())

@@ -3,7 +3,7 @@
 //
 // geodesic_ridge: the package's command-line program (DESIGN.md §8).
 //
-//   geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z)
+//   geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z) [--repair]
 //                  [--tolerance T] [--solver exact|fmm] [--ridge OUT.polylines.txt]
 //                  [--ridge-locations OUT.txt] [--rough-cut OUT.polylines.txt]
 //                  [--refined OUT.ply [--ply-ascii]]
@@ -12,7 +12,11 @@
 //                  [--stats OUT.json] [--png OUT.png]
 //
 // Exit status: 0 success, 1 bad input (mesh, source, parameter), 2 bad command
-// line, 3 internal error. Every error is one line on stderr.
+// line, 3 internal error. Every error is one line on stderr; so is every note
+// (polygons triangulated, each kind of repair).
+//
+// Indices in and out are the file's, whatever the triangulation of polygons
+// and the repair changed (Geodesic_ridge::File_index_map).
 //
 // Besides the package it needs Boost.Program_options, nlohmann-json and libpng.
 #include <Geodesic_ridge/IO/png.h>
@@ -56,6 +60,7 @@ typedef std::pair<face_descriptor, std::array<double, 3> >  Location;
 typedef Geodesic_ridge::Ridge_curve<Mesh, Point_3>          Ridge;
 typedef std::vector<std::vector<Geodesic_ridge::Ridge_point<Point_3> > > Ridge_polylines;
 typedef Mesh::Property_map<vertex_descriptor, double>       Distance_map;
+typedef Geodesic_ridge::File_index_map<Mesh>                File_map;
 typedef nlohmann::ordered_json                              Json; // keys stay in the order written
 namespace po = boost::program_options;
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -66,14 +71,21 @@ struct Usage_error : std::runtime_error
 };
 
 const char* synopsis =
-    "usage: geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z)\n"
+    "usage: geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z) [--repair]\n"
     "                      [--tolerance T] [--solver exact|fmm] [--ridge OUT.polylines.txt]\n"
     "                      [--ridge-locations OUT.txt] [--rough-cut OUT.polylines.txt]\n"
     "                      [--refined OUT.ply [--ply-ascii]]\n"
     "                      [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]\n"
     "                      [--query IN.txt [--query-barycentric] --query-out OUT.txt]\n"
     "                      [--field linear|cone] [--stats OUT.json] [--png OUT.png]\n"
-    "  MESH: a closed, connected, manifold triangle mesh (.off, .obj, .ply)\n\n";
+    "  MESH: a closed, connected, manifold mesh (.off, .obj, .ply; PLY triangle strips too). Polygons are\n"
+    "  triangulated (CGAL's triangulate_face rule; a note on stderr says how many, and how many were not\n"
+    "  planar); dirty meshes are refused, naming what --repair would fix.\n"
+    "  Indices are the file's, in and out: V, FACE, the FACE of query lines and of --ridge-locations, the\n"
+    "  stats' source, the refined mesh's 'source_face'. A point on a polygon is located among its triangles;\n"
+    "  barycentric coordinates (--query-barycentric, --ridge-locations) have one value per vertex of the\n"
+    "  file face, in file order: for a polygon, those of the point in the triangle of it that holds the\n"
+    "  point, 0 for its other vertices.\n\n";
 
 std::size_t parse_index(const std::string& what, const std::string& s)
 {
@@ -113,6 +125,7 @@ std::vector<double> parse_values(const std::string& s)
 struct Options
 {
   bool help = false;
+  bool repair = false;
   std::string mesh;
   std::optional<std::size_t> source_vertex;
   std::optional<std::size_t> source_face;
@@ -154,12 +167,18 @@ po::options_description describe()
     ("help,h", "print this help")
     ("source-vertex", text("V"), "source at vertex V (0-based, file order)")
     ("source-point", new Tokens(4, "FACE X Y Z"), "source at the point (X,Y,Z) of face FACE (0-based, file order)")
+    ("repair", po::bool_switch(), "repair the mesh with CGAL's Polygon_mesh_processing: merge vertices at one "
+                                  "position, remove faces with fewer than 3 distinct vertices, duplicate and "
+                                  "degenerate faces and isolated vertices, split non-manifold edges and vertices, "
+                                  "orient consistently; one line per kind of repair on stderr. A source vertex that "
+                                  "is split becomes the copy with the largest incident area")
     ("tolerance", text("T"), "significance tolerance in [0, 0.5) (default 0.025)")
     ("solver", text("NAME"), "geodesic solver on the extended surface: exact (CGAL Surface_mesh_shortest_path, "
                              "default) or fmm (fast marching, first order; heat and dijkstra are not in this version)")
     ("ridge", text("OUT"), "write the ridge curve as CGAL polylines (n x1 y1 z1 ... per line)")
     ("ridge-locations", text("OUT"), "write every ridge point as 'FACE B0 B1 B2 ANGLE' (barycentric in the file "
-                                     "order of the face's vertices; ANGLE: degrees between the fronts)")
+                                     "order of the face's vertices, one value per vertex; ANGLE: degrees between the "
+                                     "fronts)")
     ("refined", text("OUT.ply"), "the ridge-refined mesh: faces the ridge crosses split along it, a 'distance' per "
                                  "vertex, a 'source_face' per face (binary PLY; --ply-ascii for ASCII)")
     ("ply-ascii", po::bool_switch(), "write the refined mesh as ASCII PLY")
@@ -169,8 +188,8 @@ po::options_description describe()
     ("isolines-from-vertices", po::bool_switch(),
      "iso-lines from linear interpolation of the vertex distances instead")
     ("query", text("IN.txt"), "distance queries, one per line: 'FACE X Y Z' (a point of the face, within 1e-7 of "
-                              "its size), or with --query-barycentric 'FACE B0 B1 B2' (summing to 1 within 1e-9); "
-                              "'#' starts a comment")
+                              "its size), or with --query-barycentric 'FACE B0 B1 B2' (summing to 1 within 1e-9; "
+                              "one value per vertex of the file face); '#' starts a comment")
     ("query-barycentric", po::bool_switch(), "the queries are barycentric coordinates")
     ("query-out", text("OUT"), "the distances, one per line in the order of IN, 17 digits")
     ("field", text("KIND"), "the field the queries evaluate: linear (default, the paper's region-wise linear "
@@ -284,6 +303,7 @@ Options parse(int argc, char** argv)
   o.png = text(vm, "png"), o.ridge_locations = text(vm, "ridge-locations"), o.refined = text(vm, "refined");
   o.query = text(vm, "query"), o.query_out = text(vm, "query-out");
   o.ply_ascii = vm["ply-ascii"].as<bool>();
+  o.repair = vm["repair"].as<bool>();
   o.isolines_from_vertices = vm["isolines-from-vertices"].as<bool>();
   o.query_barycentric = vm["query-barycentric"].as<bool>();
   if(!o.source_vertex && !o.source_face)
@@ -299,12 +319,18 @@ Options parse(int argc, char** argv)
   return o;
 }
 
-// The point q of face f as a Face_location (CGAL's order). A point farther than
-// 1e-7 of the face's size from the face is an error; round-off below that is
-// clamped, so that the coordinates are >= 0 and sum to 1.
-Location locate(const Mesh& m, face_descriptor f, const Point_3& q, const std::string& what = "source point")
+// The point q of file face `face` as a Face_location (CGAL's order): for a
+// polygon, in the triangle of it that holds q. A point farther than 1e-7 of
+// the face's size from the face is an error; round-off below that is clamped,
+// so that the coordinates are >= 0 and sum to 1.
+Location locate(const File_map& map, const Mesh& m, std::size_t face, const Point_3& q,
+                const std::string& what = "source point")
 {
-  Location loc = PMP::locate_in_face(q, f, m); // the coordinates of q's projection on the face's plane
+  const std::optional<Location> found = map.locate(face, q, m);
+  if(!found)
+    throw Geodesic_ridge::Invalid_source_error("face " + std::to_string(face) + " was removed by the repair");
+  Location loc = *found; // the coordinates of q's projection on the face's plane
+  const face_descriptor f = loc.first;
   const double off_plane = std::sqrt(CGAL::squared_distance(q, PMP::construct_point(loc, m)));
   double size2 = 0;
   for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m))
@@ -315,7 +341,7 @@ Location locate(const Mesh& m, face_descriptor f, const Point_3& q, const std::s
   {
     std::ostringstream s;
     s.precision(17);
-    s << what << " (" << q << ") is not on face " << std::size_t(f);
+    s << what << " (" << q << ") is not on face " << face;
     throw Geodesic_ridge::Invalid_source_error(s.str());
   }
   for(double& x : w) x = std::max(x, 0.);
@@ -324,35 +350,63 @@ Location locate(const Mesh& m, face_descriptor f, const Point_3& q, const std::s
   return loc;
 }
 
-// The reader adds each face (v0, v1, v2) of the file with CGAL::Euler::add_face,
-// whose halfedge(f) runs from v2 to v0: a Face_location's corners are (v2, v0,
-// v1). These convert barycentric coordinates between the two orders.
-std::array<double, 3> file_order_to_location(const std::array<double, 3>& b) { return {{b[2], b[0], b[1]}}; }
-std::array<double, 3> location_to_file_order(const std::array<double, 3>& l) { return {{l[1], l[2], l[0]}}; }
-
-// One query of a query file: "FACE X Y Z" or, barycentric, "FACE B0 B1 B2".
-Location read_query(const std::vector<std::string>& t, const Mesh& mesh, bool barycentric)
+// The file face `text` names, checked.
+std::size_t file_face(const std::string& text, const File_map& map)
 {
-  if(t.size() != 4)
-    throw Geodesic_ridge::Invalid_parameter_error(std::string("expected 'FACE ") + (barycentric ? "B0 B1 B2'" : "X Y Z'") +
-                                                  ", got " + std::to_string(t.size()) + " fields");
-  const std::size_t face = parse_index("face", t[0]);
-  if(face >= mesh.number_of_faces())
-    throw Geodesic_ridge::Invalid_parameter_error("face " + t[0] + " is out of range: the mesh has " +
-                                                  std::to_string(mesh.number_of_faces()) + " faces");
-  const face_descriptor f{static_cast<Mesh::size_type>(face)};
-  std::array<double, 3> v;
-  for(int k = 0; k < 3; ++k) v[k] = parse_number("coordinate", t[k + 1]);
-  if(!barycentric) return locate(mesh, f, Point_3(v[0], v[1], v[2]), "point");
-  const double sum = v[0] + v[1] + v[2];
-  if(std::abs(sum - 1) > 1e-9 || v[0] < -1e-9 || v[1] < -1e-9 || v[2] < -1e-9)
+  const std::size_t face = parse_index("face", text);
+  if(face >= map.number_of_file_faces())
+    throw Geodesic_ridge::Invalid_parameter_error("face " + text + " is out of range: the mesh has " +
+                                                  std::to_string(map.number_of_file_faces()) + " faces");
+  return face;
+}
+
+// The barycentric query "FACE B0 ... Bn-1": one coordinate per vertex of the
+// file face, in file order.
+Location barycentric_query(const std::vector<std::string>& t, const Mesh& mesh, const File_map& map)
+{
+  const std::size_t face = file_face(t[0], map);
+  const std::size_t n = map.file_face_vertices(face).size();
+  if(t.size() != n + 1)
+    throw Geodesic_ridge::Invalid_parameter_error(
+        n == 3 ? "expected 'FACE B0 B1 B2', got " + std::to_string(t.size()) + " fields"
+               : "expected 'FACE' and " + std::to_string(n) + " coordinates (face " + t[0] + " has " +
+                     std::to_string(n) + " vertices), got " + std::to_string(t.size()) + " fields");
+  std::vector<double> v(n);
+  double sum = 0;
+  bool negative = false;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    v[k] = parse_number("coordinate", t[k + 1]);
+    sum += v[k];
+    negative = negative || v[k] < -1e-9;
+  }
+  if(std::abs(sum - 1) > 1e-9 || negative)
     throw Geodesic_ridge::Invalid_parameter_error("barycentric coordinates must be >= 0 and sum to 1 within 1e-9");
   for(double& x : v) x = std::max(x, 0.);
-  return Location(f, file_order_to_location(v));
+  const std::optional<Location> loc = map.location(face, v, mesh);
+  if(!loc)
+    throw Geodesic_ridge::Invalid_parameter_error("face " + t[0] + " was removed by the repair");
+  Location l = *loc;
+  for(double& x : l.second) x = std::max(x, 0.);
+  return l;
+}
+
+// One query of a query file: "FACE X Y Z" or, barycentric, "FACE B0 B1 B2".
+Location read_query(const std::vector<std::string>& t, const Mesh& mesh, const File_map& map, bool barycentric)
+{
+  if(barycentric) return barycentric_query(t, mesh, map);
+  if(t.size() != 4)
+    throw Geodesic_ridge::Invalid_parameter_error("expected 'FACE X Y Z', got " + std::to_string(t.size()) +
+                                                  " fields");
+  const std::size_t face = file_face(t[0], map);
+  std::array<double, 3> v;
+  for(int k = 0; k < 3; ++k) v[k] = parse_number("coordinate", t[k + 1]);
+  return locate(map, mesh, face, Point_3(v[0], v[1], v[2]), "point");
 }
 
 // One query per line of `filename`; '#' starts a comment. Errors name the line.
-std::vector<Location> read_queries(const std::string& filename, const Mesh& mesh, bool barycentric)
+std::vector<Location> read_queries(const std::string& filename, const Mesh& mesh, const File_map& map,
+                                   bool barycentric)
 {
   std::ifstream is(filename);
   if(!is) throw Geodesic_ridge::Invalid_parameter_error("cannot open query file '" + filename + "'");
@@ -368,7 +422,7 @@ std::vector<Location> read_queries(const std::string& filename, const Mesh& mesh
     if(t.empty()) continue;
     try
     {
-      queries.push_back(read_query(t, mesh, barycentric));
+      queries.push_back(read_query(t, mesh, map, barycentric));
     }
     catch(const Geodesic_ridge::Error& e)
     {
@@ -418,19 +472,29 @@ GEODESIC_RIDGE_JSON_FIELDS(Geodesic_ridge_statistics, solver, tolerance, tree_fr
                            outer_copies_winning, ring_cap_hit, rough_cut_locus, extended_surface, ridge, cone_ridge)
 GEODESIC_RIDGE_JSON_FIELDS(Refined_mesh_statistics, vertices, faces, split_faces, centre_vertices, ridge_edges,
                            unmatched_ridge_segments, largest_disagreement)
+GEODESIC_RIDGE_JSON_FIELDS(Repair_statistics, triangulated_polygons, non_planar_polygons, triangles_from_polygons,
+                           repaired, merged_vertices, removed_invalid_faces, removed_duplicate_faces,
+                           split_non_manifold_edges, split_non_manifold_vertices, added_vertex_copies,
+                           removed_degenerate_faces, reoriented_faces, removed_isolated_vertices)
 } // namespace Geodesic_ridge
 
 namespace {
 
-void write_stats(const std::string& filename, const Options& o, const Ridge& rc, double read_seconds,
-                 const Geodesic_ridge::Refined_mesh_statistics* refined)
+void write_stats(const std::string& filename, const Options& o, const Ridge& rc, const Mesh& mesh,
+                 const File_map& map, double read_seconds, const Geodesic_ridge::Refined_mesh_statistics* refined)
 {
   const auto& r = rc.rough_cut_locus;
   const auto& s = r.statistics;
+  // the source in the file's terms: the file face and one coordinate per vertex of it
+  const auto file_source = map.file_location(r.source.location, mesh);
   const Json source = o.source_vertex ? Json{{"vertex", *o.source_vertex}}
-                                      : Json{{"face", *o.source_face}, {"barycentric", r.source.location.second}};
+                                      : Json{{"face", file_source.face}, {"barycentric", file_source.coordinates}};
   Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source}, {"tolerance", o.tolerance}, {"solver", o.solver},
-                            {"field", o.field == Geodesic_ridge::Field::cone ? "cone" : "linear"}}},
+                            {"field", o.field == Geodesic_ridge::Field::cone ? "cone" : "linear"},
+                            {"repair", o.repair}}},
+            {"input", {{"file_vertices", map.number_of_file_vertices()},
+                       {"file_faces", map.number_of_file_faces()},
+                       {"triangulation_and_repair", map.statistics()}}},
             {"mesh", {{"vertices", s.number_of_vertices}, {"edges", s.number_of_edges},
                       {"faces", s.number_of_faces}, {"genus", s.genus}, {"total_area", r.total_area}}},
             {"ridge", {{"polylines", rc.polylines.size()}, {"cone_polylines", rc.cone_polylines.size()}}},
@@ -450,8 +514,30 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
   if(!os) throw Geodesic_ridge::Error("cannot write '" + filename + "'");
 }
 
+// The mesh vertex of the file's source vertex, said on stderr when the repair
+// merged or split it.
+vertex_descriptor source_vertex(const Mesh& mesh, const File_map& map, std::size_t v)
+{
+  if(v >= map.number_of_file_vertices())
+    throw Geodesic_ridge::Invalid_source_error("source vertex " + std::to_string(v) +
+                                               " is out of range: the mesh has " +
+                                               std::to_string(map.number_of_file_vertices()) + " vertices");
+  const std::optional<vertex_descriptor> found = map.vertex(v, mesh);
+  if(!found)
+    throw Geodesic_ridge::Invalid_source_error("source vertex " + std::to_string(v) +
+                                               " was removed by the repair (no face of the repaired mesh uses it)");
+  const std::size_t copies = map.vertices(v).size(), merged_into = map.file_vertex(*found, mesh);
+  if(merged_into != v)
+    std::cerr << "geodesic_ridge: note: source vertex " << v << " was merged by the repair into vertex "
+              << merged_into << " (same position)\n";
+  if(copies > 1)
+    std::cerr << "geodesic_ridge: note: source vertex " << v << " was split by the repair into " << copies
+              << " copies; the source is the copy with the largest incident area\n";
+  return *found;
+}
+
 // The ridge of the source the options name; the solver is a type: one call per model.
-Ridge compute(const Mesh& mesh, const Options& o)
+Ridge compute(const Mesh& mesh, const File_map& map, const Options& o)
 {
   namespace p = Geodesic_ridge::parameters;
   auto compute = [&](const auto& source) {
@@ -460,30 +546,31 @@ Ridge compute(const Mesh& mesh, const Options& o)
           mesh, source, p::tolerance(o.tolerance, p::solver(Geodesic_ridge::Fast_marching_solver())));
     return Geodesic_ridge::compute_ridge_curve(mesh, source, p::tolerance(o.tolerance, p::field(o.field)));
   };
-  if(o.source_vertex)
-  {
-    if(*o.source_vertex >= mesh.number_of_vertices())
-      throw Geodesic_ridge::Invalid_source_error(
-          "source vertex " + std::to_string(*o.source_vertex) + " is out of range: the mesh has " +
-          std::to_string(mesh.number_of_vertices()) + " vertices");
-    return compute(vertex_descriptor(Mesh::size_type(*o.source_vertex)));
-  }
-  if(*o.source_face >= mesh.number_of_faces())
+  if(o.source_vertex) return compute(source_vertex(mesh, map, *o.source_vertex));
+  if(*o.source_face >= map.number_of_file_faces())
     throw Geodesic_ridge::Invalid_source_error(
         "source face " + std::to_string(*o.source_face) + " is out of range: the mesh has " +
-        std::to_string(mesh.number_of_faces()) + " faces");
+        std::to_string(map.number_of_file_faces()) + " faces");
+  if(map.faces(*o.source_face).empty())
+    throw Geodesic_ridge::Invalid_source_error("source face " + std::to_string(*o.source_face) +
+                                               " was removed by the repair (degenerate, duplicate, or with "
+                                               "fewer than 3 distinct vertices)");
   const Point_3 q(parse_number("source x", o.source_point_text[0]),
                   parse_number("source y", o.source_point_text[1]),
                   parse_number("source z", o.source_point_text[2]));
-  return compute(locate(mesh, face_descriptor(Mesh::size_type(*o.source_face)), q));
+  return compute(locate(map, mesh, *o.source_face, q));
 }
 
-void print_summary(const Options& o, const Ridge& ridge)
+void print_summary(const Options& o, const Ridge& ridge, const File_map& map)
 {
   const auto& s = ridge.rough_cut_locus.statistics;
   const auto& g = ridge.statistics;
   std::cout << "mesh " << o.mesh << ": " << s.number_of_vertices << " vertices, "
-            << s.number_of_faces << " faces, genus " << s.genus << "\n"
+            << s.number_of_faces << " faces, genus " << s.genus;
+  if(s.number_of_vertices != map.number_of_file_vertices() || s.number_of_faces != map.number_of_file_faces())
+    std::cout << " (the file: " << map.number_of_file_vertices() << " vertices, " << map.number_of_file_faces()
+              << " faces)";
+  std::cout << "\n"
             << "rough cut locus (tolerance " << o.tolerance << "): " << s.number_of_kept_dual_edges
             << " of " << s.number_of_dual_edges << " dual edges kept; cut graph K: "
             << s.number_of_cut_edges << " edges, " << s.number_of_cut_leaves << " leaves\n"
@@ -501,17 +588,20 @@ void print_summary(const Options& o, const Ridge& ridge)
 
 // The mesh split along the ridge, with a distance per vertex, the input face of
 // each face ("f:source_face") and the ridge's edges ("e:ridge").
-Geodesic_ridge::Refined_mesh_statistics refine(const Mesh& mesh, const Ridge& ridge, Mesh& refined,
-                                               Distance_map distance)
+Geodesic_ridge::Refined_mesh_statistics refine(const Mesh& mesh, const File_map& map, const Ridge& ridge,
+                                               Mesh& refined, Distance_map distance)
 {
   auto source_face = refined.add_property_map<face_descriptor, std::int32_t>("f:source_face", -1).first;
   auto on_ridge = refined.add_property_map<Mesh::Edge_index, bool>("e:ridge", false).first;
+  // the file face of each face
   struct Record_source_face
   {
-    Mesh::Property_map<face_descriptor, std::int32_t> map;
+    Mesh::Property_map<face_descriptor, std::int32_t> source_face;
+    const File_map& map;
+    const Mesh& mesh;
     void face_created(face_descriptor original, face_descriptor created)
-    { map[created] = static_cast<std::int32_t>(std::size_t(original)); }
-  } visitor{source_face};
+    { source_face[created] = static_cast<std::int32_t>(map.file_face(original, mesh)); }
+  } visitor{source_face, map, mesh};
   const auto st = Geodesic_ridge::refine_mesh_along_ridge(
       mesh, ridge, refined, CGAL::parameters::default_values(),
       Geodesic_ridge::parameters::vertex_distance_map(distance).edge_is_constrained_map(on_ridge).visitor(visitor));
@@ -540,11 +630,14 @@ void write_refined(const std::string& filename, const Mesh& refined, bool ascii)
             << "face property 'source_face')\n";
 }
 
-void write_ridge_locations(const std::string& filename, const Ridge_polylines& ridge)
+void write_ridge_locations(const std::string& filename, const Ridge_polylines& ridge, const Mesh& mesh,
+                           const File_map& map)
 {
   std::ofstream os(filename);
   if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
-  os << "# FACE B0 B1 B2 ANGLE: a ridge point, barycentric in the file order of the face's vertices;\n"
+  os << "# FACE B0 B1 B2 ANGLE: a ridge point, barycentric in the file order of the face's vertices\n"
+        "# (file indices; one value per vertex of the face: for a polygon, the point's coordinates in the\n"
+        "# triangle of it that holds the point, 0 for its other vertices);\n"
         "# ANGLE: degrees between the two fronts; one polyline after another, '# polyline' between\n";
   os.precision(17);
   std::size_t points = 0;
@@ -553,8 +646,11 @@ void write_ridge_locations(const std::string& filename, const Ridge_polylines& r
     os << "# polyline\n";
     for(const auto& p : pl)
     {
-      const auto b = location_to_file_order(p.barycentric);
-      os << p.face << ' ' << b[0] << ' ' << b[1] << ' ' << b[2] << ' ' << p.angle << '\n';
+      const Geodesic_ridge::File_face_location l =
+          map.file_location(Location(face_descriptor(Mesh::size_type(p.face)), p.barycentric), mesh);
+      os << l.face;
+      for(double b : l.coordinates) os << ' ' << b;
+      os << ' ' << p.angle << '\n';
       ++points;
     }
   }
@@ -630,17 +726,37 @@ void write_picture(const std::string& filename, const Mesh& mesh, const Ridge& r
   std::cout << "wrote " << filename << "\n";
 }
 
+// Says on stderr what the reading changed, before the mesh is validated (so
+// also when it is then refused): one line for the polygons, one per kind of repair.
+struct Report_repair
+{
+  void after_repair(const Geodesic_ridge::Repair_statistics& st) const
+  {
+    const std::string note = st.triangulation_note();
+    if(!note.empty()) std::cerr << "geodesic_ridge: note: " << note << "\n";
+    for(const std::string& line : st.repair_report()) std::cerr << "geodesic_ridge: " << line << "\n";
+  }
+};
+
+// Reads the mesh: polygons triangulated, repaired with --repair.
+File_map read_mesh(const Options& o, Mesh& mesh)
+{
+  return Geodesic_ridge::IO::read_triangle_mesh(o.mesh, mesh,
+                                                Geodesic_ridge::parameters::repair(o.repair).visitor(Report_repair()));
+}
+
 int run(const Options& o)
 {
   namespace p = Geodesic_ridge::parameters;
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh;
-  Geodesic_ridge::IO::read_triangle_mesh(o.mesh, mesh);
+  const File_map map = read_mesh(o, mesh);
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // bad queries are reported before the ridge is computed
-  const auto queries = o.query.empty() ? std::vector<Location>() : read_queries(o.query, mesh, o.query_barycentric);
-  const Ridge ridge = compute(mesh, o);
-  print_summary(o, ridge);
+  const auto queries =
+      o.query.empty() ? std::vector<Location>() : read_queries(o.query, mesh, map, o.query_barycentric);
+  const Ridge ridge = compute(mesh, map, o);
+  print_summary(o, ridge, map);
   // the ridge written and drawn: with the cone field, the cones' own
   const auto& reported = o.field == Geodesic_ridge::Field::cone ? ridge.cone_polylines : ridge.polylines;
   // queries answer from the chosen field; the rest is linear
@@ -649,9 +765,9 @@ int run(const Options& o)
   const auto refined_distance = refined.add_property_map<vertex_descriptor, double>("v:distance", 0).first;
   std::optional<Geodesic_ridge::Refined_mesh_statistics> refined_stats;
   if(!o.refined.empty() || !o.png.empty() || (!o.isolines.empty() && !o.isolines_from_vertices))
-    refined_stats = refine(mesh, ridge, refined, refined_distance);
+    refined_stats = refine(mesh, map, ridge, refined, refined_distance);
   if(!o.refined.empty()) write_refined(o.refined, refined, o.ply_ascii);
-  if(!o.ridge_locations.empty()) write_ridge_locations(o.ridge_locations, reported);
+  if(!o.ridge_locations.empty()) write_ridge_locations(o.ridge_locations, reported, mesh, map);
   if(!o.query.empty() && o.field == Geodesic_ridge::Field::cone)
     write_distances(o.query_out, Geodesic_ridge::make_distance_field(mesh, ridge, p::field(o.field)), queries);
   else if(!o.query.empty())
@@ -675,7 +791,7 @@ int run(const Options& o)
   if(!o.png.empty()) write_picture(o.png, mesh, ridge, points_of(reported), refined, refined_distance);
   if(!o.stats.empty())
   {
-    write_stats(o.stats, o, ridge, read_seconds, refined_stats ? &*refined_stats : nullptr);
+    write_stats(o.stats, o, ridge, mesh, map, read_seconds, refined_stats ? &*refined_stats : nullptr);
     std::cout << "wrote " << o.stats << "\n";
   }
   return 0;
@@ -694,6 +810,11 @@ int main(int argc, char** argv)
   {
     std::cerr << "geodesic_ridge: error: " << e.what() << " (see --help)\n";
     return 2;
+  }
+  catch(const Geodesic_ridge::Repairable_mesh_error& e)
+  {
+    std::cerr << "geodesic_ridge: error: " << e.what() << " (use --repair)\n";
+    return 1;
   }
   catch(const Geodesic_ridge::Algorithm_error& e)
   {

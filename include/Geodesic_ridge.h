@@ -9,6 +9,8 @@
 #include <Geodesic_ridge/parameters.h>
 #include <Geodesic_ridge/source.h>
 #include <Geodesic_ridge/mesh_validation.h>
+#include <Geodesic_ridge/repair.h>
+#include <Geodesic_ridge/file_index_map.h>
 #include <Geodesic_ridge/rough_cut_locus.h>
 #include <Geodesic_ridge/extended_surface.h>
 #include <Geodesic_ridge/lower_envelope.h>

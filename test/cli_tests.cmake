@@ -23,7 +23,14 @@ cli_failure(missing_file          "no_such_mesh.off" ${CLI} ${B}/no_such_mesh.of
 cli_failure(garbage_file          "garbage.off" ${CLI} ${B}/garbage.off --source-vertex 0)
 cli_failure(truncated_file        "truncated" ${CLI} ${B}/truncated.off --source-vertex 0)
 cli_failure(nan_coordinate        "(NaN|nan|finite|malformed|cannot read)" ${CLI} ${B}/nan_coordinate.off --source-vertex 0)
-cli_failure(non_triangle          "4 vertices" ${CLI} ${B}/quads.off --source-vertex 0)
+# quads.off: two quads (triangulated, with a note) and an isolated vertex
+function(cli_failure_after_notes name expect notes)
+  add_test(NAME cli.error.${name}
+           COMMAND ${CMAKE_COMMAND} "-DEXPECT=${expect}" "-DNOTES=${notes}" "-DCOMMAND=${ARGN}"
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_failure.cmake)
+endfunction()
+cli_failure_after_notes(isolated_vertex_after_polygons "vertex 4 is isolated .*\\(use --repair\\)$"
+                        "note: 2 polygons triangulated into 4 triangles; 0 not planar" ${CLI} ${B}/quads.off --source-vertex 0)
 cli_failure(source_out_of_range   "source vertex 500 is out of range" ${CLI} ${D}/torus_1k.off --source-vertex 500)
 cli_failure(source_not_a_number   "source vertex 'abc' is not a non-negative integer" ${CLI} ${D}/torus_1k.off --source-vertex abc)
 cli_failure(source_negative       "source vertex '-1' is not a non-negative integer" ${CLI} ${D}/torus_1k.off --source-vertex -1)
@@ -106,3 +113,47 @@ cli_png(eight --solver fmm)
 
 # A surface with a border (one triangle): accepted, an empty ridge.
 add_test(NAME cli.border.open_triangle COMMAND ${CLI} ${B}/open_triangle.off --source-vertex 0)
+
+# Dirty input: every refusal that --repair would fix says so; with --repair,
+# the repair is counted on stderr and every index in and out is the file's.
+cli_failure(pinched_vertex        "vertex 0 is non-manifold .*\\(use --repair\\)$" ${CLI} ${B}/pinched.off --source-vertex 0)
+cli_failure(range_grid_ply        "element 'range_grid' holds vertex-index lists" ${CLI} ${B}/range_grid.ply --source-vertex 0)
+cli_failure_after_notes(source_vertex_removed "source vertex 2 was removed by the repair"
+                        "repair: 1 isolated vertices removed" ${CLI} ${B}/cube_quads_isolated.off --repair --source-vertex 2)
+cli_failure_after_notes(source_vertex_file_range "source vertex 9 is out of range: the mesh has 9 vertices"
+                        "note: 6 polygons" ${CLI} ${B}/cube_quads_isolated.off --repair --source-vertex 9)
+cli_failure_after_notes(query_quad_wrong_count "line 3: expected 'FACE' and 4 coordinates \\(face 0 has 4 vertices\\), got 4 fields"
+                        "note: 6 polygons" ${CLI} ${B}/cube_quads.off --source-vertex 0 --query ${B}/queries_torus_1k_barycentric.txt
+                        --query-barycentric --query-out ${OUTDIR}/q.txt)
+# a cube of quads with an isolated vertex inserted as vertex 2, against the cube
+add_test(NAME cli.repair.isolated_vertex_and_quads
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DDIRTY=${B}/cube_quads_isolated.off -DDIRTY_SOURCE=5
+                 -DCLEAN=${B}/cube_quads.off -DCLEAN_SOURCE=4 -DCLEAN_EXTRA=--repair
+                 -DQUERIES=${B}/queries_cube_quads_points.txt -DBARYCENTRIC=${B}/queries_cube_quads_barycentric.txt
+                 "-DNOTES=note: 6 polygons triangulated into 12 triangles; 0 not planar;repair: 1 isolated vertices removed"
+                 -DOUT=${OUTDIR}/repair -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_repair.cmake)
+# a pinched vertex, split: the source is the copy of the larger cone, which the
+# clean file has as a vertex of its own
+add_test(NAME cli.repair.pinched_vertex
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DDIRTY=${B}/pinched.off -DDIRTY_SOURCE=0
+                 -DCLEAN=${B}/pinched_split.off -DCLEAN_SOURCE=1 -DQUERIES=${B}/queries_pinched_points.txt
+                 "-DNOTES=repair: 1 non-manifold vertices split \\(1 vertex copies added\\);source vertex 0 was split by the repair into 2 copies; the source is the copy with the largest incident area"
+                 -DOUT=${OUTDIR}/repair -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_repair.cmake)
+# PLY triangle strips read as the faces they stand for, in strip order
+add_test(NAME cli.repair.ply_triangle_strips
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DDIRTY=${B}/tetrahedron_strips.ply -DDIRTY_SOURCE=0
+                 -DCLEAN=${B}/tetrahedron_strips_as_faces.off -DCLEAN_SOURCE=0 -DCLEAN_EXTRA=--repair
+                 -DOUT=${OUTDIR}/repair -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_repair.cmake)
+# a face reversed: the repair reverses it back (the fewer faces), as the clean file has it
+add_test(NAME cli.repair.orientation
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DDIRTY=${B}/octahedron_flipped.off -DDIRTY_SOURCE=4
+                 -DCLEAN=${B}/octahedron.off -DCLEAN_SOURCE=4 "-DNOTES=repair: 1 faces reoriented"
+                 -DREORDERED_FACES=ON -DQUERIES=${B}/queries_octahedron_points.txt
+                 -DOUT=${OUTDIR}/repair -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_repair.cmake)
+# a degenerate face (a cap closing a T-junction): removed, the mesh then accepted
+add_test(NAME cli.repair.degenerate_face
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DDIRTY=${B}/octahedron_cap.off -DDIRTY_SOURCE=4
+                 -DCLEAN=${B}/octahedron_cap.off -DCLEAN_SOURCE=4 -DCLEAN_EXTRA=--repair
+                 "-DNOTES=repair: 1 degenerate faces removed" -DOUT=${OUTDIR}/repair_degenerate
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_repair.cmake)
+cli_failure(degenerate_face       "face 9 is degenerate .*\\(use --repair\\)$" ${CLI} ${B}/octahedron_cap.off --source-vertex 4)

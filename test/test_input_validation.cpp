@@ -316,14 +316,31 @@ TEST_CASE("rule 1: an empty mesh is rejected", "[input][validation]")
              Contains("mesh is empty (0 vertices, 0 faces)"));
 }
 
-TEST_CASE("rule 2: a face that is not a triangle is rejected, not triangulated", "[input][validation]")
+TEST_CASE("rule 2: a face that is not a triangle is rejected by the validation, triangulated by the reader",
+          "[input][validation]")
 {
   // A square pyramid: a closed mesh whose base (face 0) is a quad.
   Soup s;
   s.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 1}};
   s.faces = {{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
-  check_invalid_everywhere(s, "face 0 has 4 vertices; only triangle meshes are supported");
+  CHECK_THAT(message_of<Geodesic_ridge::Repairable_mesh_error>(
+               [&] { Geodesic_ridge::validate_triangle_soup(s.cgal_points(), s.cgal_faces()); }),
+             Contains("face 0 has 4 vertices; only triangle meshes are supported"));
   check_invalid_surface_mesh(s, "face 0 has 4 vertices; only triangle meshes are supported");
+  // The reader triangulates it (test_repair.cpp tests how): the quad's two
+  // triangles are faces 0 and 5, the other faces keep their index.
+  Temp_dir dir;
+  for(const std::string& path : {dir.write("p.off", to_off(s)), dir.write("p.obj", to_obj(s)),
+                                 dir.write("p.ply", to_ply(s)), dir.write("p.bin.ply", to_binary_ply(s))})
+  {
+    INFO(path);
+    Mesh tm;
+    const auto map = Geodesic_ridge::IO::read_triangle_mesh(path, tm);
+    CHECK(tm.number_of_faces() == 6);
+    CHECK(map.statistics().triangulated_polygons == 1);
+    for(std::size_t j = 0; j < 6; ++j)
+      CHECK(map.file_face(Mesh::Face_index(static_cast<Mesh::size_type>(j)), tm) == (j == 5 ? 0 : j));
+  }
 }
 
 TEST_CASE("rule 3: a face index out of range is rejected", "[input][validation]")

@@ -49,6 +49,19 @@ public:
 };
 
 /// \ingroup PkgGeodesicRidgeRef
+/// The mesh breaks a rule that the repair (`repair_mesh()`, or
+/// `IO::read_triangle_mesh()` with `parameters::repair(true)`; the command
+/// line's `--repair`) fixes: a face with fewer than three distinct vertices, an
+/// isolated vertex, duplicate faces, a non-manifold edge or vertex, an
+/// inconsistent orientation, a degenerate face.
+class Repairable_mesh_error : public Invalid_mesh_error
+{
+public:
+  /// makes the exception with its one-line message
+  using Invalid_mesh_error::Invalid_mesh_error;
+};
+
+/// \ingroup PkgGeodesicRidgeRef
 /// The source (vertex index, face index, barycentric coordinates) is invalid.
 class Invalid_source_error : public Input_error
 {

@@ -98,13 +98,20 @@ Epick_point_3 to_epick(const Point_3& p)
   return Epick_point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
 }
 
-[[noreturn]] inline void fail(const std::ostringstream& message)
+// `repairable`: the repair (`repair_mesh()`) would fix the problem, and the
+// exception says so by its type.
+[[noreturn]] inline void fail(const std::ostringstream& message, bool repairable = false)
 {
+  if(repairable)
+    throw Repairable_mesh_error(message.str());
   throw Invalid_mesh_error(message.str());
 }
 
 // The rules of `validate_triangle_soup()`, one member function each, run in
-// the documented order by `run()`: the first failing rule throws.
+// the documented order by `run()`: the first failing rule throws. Messages
+// name vertex v and face f as `file_vertex(v)` and `file_face(f)`: the soup's
+// own indices, or the file's when the soup was made from a file by
+// triangulating (and repairing) it (`set_file_indices()`).
 template <class Point_3, class Polygon>
 class Triangle_soup_validator
 {
@@ -112,6 +119,27 @@ public:
   Triangle_soup_validator(const std::vector<Point_3>& points, const std::vector<Polygon>& polygons)
     : points_(points), polygons_(polygons), nv_(points.size()), nf_(polygons.size())
   {}
+
+  // Null, or one file index per vertex / face of the soup.
+  void set_file_indices(const std::vector<std::size_t>* vertex_to_file, const std::vector<std::size_t>* face_to_file)
+  {
+    vertex_to_file_ = vertex_to_file;
+    face_to_file_ = face_to_file;
+  }
+
+  // The rules that hold for polygons of any size, before they are
+  // triangulated: 1, at least three corners per face (2), 3, 4 and 5; without
+  // the ones the repair fixes (2 and 4) if `repairable_too` is false.
+  void run_polygon_rules(bool repairable_too = true) const
+  {
+    check_not_empty();
+    if(repairable_too)
+      check_at_least_three_corners();
+    check_indices_in_range();
+    if(repairable_too)
+      check_no_repeated_corner();
+    check_finite_coordinates();
+  }
 
   void run()
   {
@@ -156,6 +184,59 @@ private:
     }
   }
 
+  std::size_t file_vertex(std::size_t v) const { return vertex_to_file_ ? (*vertex_to_file_)[v] : v; }
+  std::size_t file_face(std::size_t f) const { return face_to_file_ ? (*face_to_file_)[f] : f; }
+
+  void check_at_least_three_corners() const
+  {
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      const std::size_t n = static_cast<std::size_t>(polygons_[f].size());
+      if(n < 3)
+      {
+        std::ostringstream msg;
+        msg << "face " << file_face(f) << " has " << n << (n == 1 ? " vertex" : " vertices")
+            << "; a face needs at least 3";
+        fail(msg, true);
+      }
+    }
+  }
+
+  void check_indices_in_range() const
+  {
+    for(std::size_t f = 0; f < nf_; ++f)
+      for(const auto raw : polygons_[f])
+        if(to_index(raw) >= nv_)
+        {
+          std::ostringstream msg;
+          msg << "face " << file_face(f) << " refers to vertex " << index_to_string(raw)
+              << ", out of range (the mesh has " << nv_ << " vertices, numbered from 0)";
+          fail(msg);
+        }
+  }
+
+  // Rule 4 for a polygon of any size (indices in range).
+  void check_no_repeated_corner() const
+  {
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      std::vector<std::size_t> corners;
+      for(const auto raw : polygons_[f])
+        corners.push_back(to_index(raw));
+      std::vector<std::size_t> sorted = corners;
+      std::sort(sorted.begin(), sorted.end());
+      const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+      if(twice == sorted.end())
+        continue;
+      std::ostringstream msg;
+      msg << "face " << file_face(f) << " repeats vertex " << file_vertex(*twice) << " (vertices ";
+      for(std::size_t k = 0; k < corners.size(); ++k)
+        msg << (k == 0 ? "" : ", ") << file_vertex(corners[k]);
+      msg << ")";
+      fail(msg, true);
+    }
+  }
+
   void check_triangles() const
   {
     for(std::size_t f = 0; f < nf_; ++f)
@@ -164,9 +245,9 @@ private:
       if(n != 3)
       {
         std::ostringstream msg;
-        msg << "face " << f << " has " << n << (n == 1 ? " vertex" : " vertices")
+        msg << "face " << file_face(f) << " has " << n << (n == 1 ? " vertex" : " vertices")
             << "; only triangle meshes are supported";
-        fail(msg);
+        fail(msg, n > 3);
       }
     }
   }
@@ -184,7 +265,7 @@ private:
         if(v >= nv_)
         {
           std::ostringstream msg;
-          msg << "face " << f << " refers to vertex " << index_to_string(raw)
+          msg << "face " << file_face(f) << " refers to vertex " << index_to_string(raw)
               << ", out of range (the mesh has " << nv_ << " vertices, numbered from 0)";
           fail(msg);
         }
@@ -201,9 +282,9 @@ private:
       if(a == b || a == c || b == c)
       {
         std::ostringstream msg;
-        msg << "face " << f << " repeats vertex " << (a == b || a == c ? a : b)
-            << " (vertices " << a << ", " << b << ", " << c << ")";
-        fail(msg);
+        msg << "face " << file_face(f) << " repeats vertex " << file_vertex(a == b || a == c ? a : b)
+            << " (vertices " << file_vertex(a) << ", " << file_vertex(b) << ", " << file_vertex(c) << ")";
+        fail(msg, true);
       }
     }
   }
@@ -215,7 +296,7 @@ private:
       if(!has_finite_coordinates(points_[v]))
       {
         std::ostringstream msg;
-        msg << "vertex " << v << " has a non-finite coordinate (" << CGAL::to_double(points_[v].x()) << " "
+        msg << "vertex " << file_vertex(v) << " has a non-finite coordinate (" << CGAL::to_double(points_[v].x()) << " "
             << CGAL::to_double(points_[v].y()) << " " << CGAL::to_double(points_[v].z()) << ")";
         fail(msg);
       }
@@ -231,8 +312,8 @@ private:
     if(it != used.end())
     {
       std::ostringstream msg;
-      msg << "vertex " << (it - used.begin()) << " is isolated (used by no face)";
-      fail(msg);
+      msg << "vertex " << file_vertex(static_cast<std::size_t>(it - used.begin())) << " is isolated (used by no face)";
+      fail(msg, true);
     }
   }
 
@@ -263,9 +344,10 @@ private:
     if(first != invalid_index)
     {
       std::ostringstream msg;
-      msg << "faces " << other << " and " << first << " are duplicates (both on vertices "
-          << sorted[3 * first] << ", " << sorted[3 * first + 1] << ", " << sorted[3 * first + 2] << ")";
-      fail(msg);
+      msg << "faces " << file_face(other) << " and " << file_face(first) << " are duplicates (both on vertices "
+          << file_vertex(sorted[3 * first]) << ", " << file_vertex(sorted[3 * first + 1]) << ", "
+          << file_vertex(sorted[3 * first + 2]) << ")";
+      fail(msg, true);
     }
   }
 
@@ -322,17 +404,18 @@ private:
     if(p.non_manifold != invalid_index)
     {
       const std::size_t h = p.non_manifold;
-      msg << "edge " << low(h) << "-" << high(h) << " is non-manifold: it is shared by " << p.non_manifold_count
-          << " faces (first: face " << h / 3 << "); only manifold meshes are supported";
-      fail(msg);
+      msg << "edge " << file_vertex(low(h)) << "-" << file_vertex(high(h)) << " is non-manifold: it is shared by "
+          << p.non_manifold_count << " faces (first: face " << file_face(h / 3)
+          << "); only manifold meshes are supported";
+      fail(msg, true);
     }
     if(p.misoriented != invalid_index)
     {
       const std::size_t h = p.misoriented;
-      msg << "faces " << h / 3 << " and " << p.misoriented_other / 3
-          << " are inconsistently oriented (both traverse edge " << source(h) << "->" << target(h)
-          << " in the same direction)";
-      fail(msg);
+      msg << "faces " << file_face(h / 3) << " and " << file_face(p.misoriented_other / 3)
+          << " are inconsistently oriented (both traverse edge " << file_vertex(source(h)) << "->"
+          << file_vertex(target(h)) << " in the same direction)";
+      fail(msg, true);
     }
   }
 
@@ -385,9 +468,9 @@ private:
       if(fans > 1)
       {
         std::ostringstream msg;
-        msg << "vertex " << v << " is non-manifold (its faces form " << fans
+        msg << "vertex " << file_vertex(v) << " is non-manifold (its faces form " << fans
             << " separate fans); only manifold meshes are supported";
-        fail(msg);
+        fail(msg, true);
       }
     }
   }
@@ -418,8 +501,8 @@ private:
                          to_epick(points_[tri_[3 * f + 2]])))
       {
         std::ostringstream msg;
-        msg << "face " << f << " is degenerate (its corners are collinear)";
-        fail(msg);
+        msg << "face " << file_face(f) << " is degenerate (its corners are collinear)";
+        fail(msg, true);
       }
     }
   }
@@ -427,6 +510,8 @@ private:
   const std::vector<Point_3>& points_;
   const std::vector<Polygon>& polygons_;
   const std::size_t nv_, nf_;
+  const std::vector<std::size_t>* vertex_to_file_ = nullptr;
+  const std::vector<std::size_t>* face_to_file_ = nullptr;
   std::vector<std::size_t> tri_; // face f is tri_[3f], tri_[3f + 1], tri_[3f + 2]
 };
 
@@ -444,9 +529,10 @@ private:
 /// problem and the first offending index in vertex / face order):
 ///
 /// 1. the mesh is not empty: it has at least one vertex and one face;
-/// 2. every face is a triangle. Other polygons are rejected, not triangulated,
-///    because triangulating would renumber the faces and the user's face
-///    indices (`--source-point FACE ...`) would silently point elsewhere;
+/// 2. every face is a triangle. Other polygons are rejected here; a file's
+///    polygons are triangulated by `IO::read_triangle_mesh()`, and a soup's by
+///    `triangulate_polygons()` or `repair_mesh()`, which keep the map from each
+///    triangle back to its polygon;
 /// 3. every face index is in `[0, points.size())`;
 /// 4. no face repeats a vertex;
 /// 5. every coordinate is finite (no NaN, no infinity);
@@ -479,7 +565,10 @@ private:
 /// \param points the vertex positions
 /// \param polygons the faces, as indices into `points`
 ///
-/// \throws Invalid_mesh_error if a rule fails
+/// \throws Repairable_mesh_error (a subclass of `Invalid_mesh_error`) if a
+///         rule that `repair_mesh()` fixes fails: rules 2, 4, 6, 7, 8, 10, 11
+///         and 13
+/// \throws Invalid_mesh_error if another rule fails
 template <class Point_3, class Polygon>
 void validate_triangle_soup(const std::vector<Point_3>& points, const std::vector<Polygon>& polygons)
 {

@@ -26,6 +26,8 @@ struct tolerance_t {};
 struct leaf_curvature_t {};
 /// Tag of the curvature a kept branch of the cut graph must enclose (degrees).
 struct branch_curvature_t {};
+/// Tag of the repair of a mesh read from a file (`IO::read_triangle_mesh()`).
+struct repair_t {};
 } // namespace internal_np
 
 /// \ingroup PkgGeodesicRidgeNamedParameters
@@ -87,6 +89,16 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_curvature)
 /// a false branch, which leaves creases where the solver's copies on its two
 /// sides meet. On genus 0 the smaller curvature of the two sides counts.
 GEODESIC_RIDGE_NAMED_PARAMETER(double, branch_curvature)
+
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// `IO::read_triangle_mesh()` repairs the mesh with `repair_mesh()` (merges
+/// vertices at one position, removes faces with fewer than three distinct
+/// vertices, duplicate faces, degenerate faces and isolated vertices, splits
+/// non-manifold edges and vertices, orients consistently) instead of refusing
+/// what the repair fixes (default `false`; polygons are triangulated either
+/// way). The returned `File_index_map` says what changed and maps the repaired
+/// mesh back to the file's indices.
+GEODESIC_RIDGE_NAMED_PARAMETER(bool, repair)
 
 } // namespace parameters
 
