@@ -35,6 +35,16 @@
 //     (default 2 degrees) and within `source_exclusion` mean edges of the source
 //     (Euclidean) are dropped.
 //
+// Meshes with boundary (any number of boundary loops) are supported: no pair is
+// formed across a border edge (there is no face beyond it; `border_edges`
+// counts them); a shortest path bending at a boundary vertex of inner angle > pi
+// stops the last-leg walk there like a saddle vertex does (its exact distance is
+// the offset sigma); the shadow line of such a vertex fails the two-front test
+// for the same reason as a saddle's. Near the boundary the ridge is sampled up
+// to the last row of samples, about spacing / 2 from the border edge. A source
+// on the boundary works: a vertex as is, a point of an edge (border or not)
+// moved into its face first (see `reference_ridge()` for a surface point).
+//
 // This uses SMSP's public interface only (`shortest_path_sequence_to_source_points`
 // with a visitor). Finite differences of `shortest_distance_to_source_points`
 // were rejected: next to the ridge a difference stencil straddles two fronts and
@@ -52,6 +62,7 @@
 #include <CGAL/Surface_mesh_shortest_path.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/property_map.h>
+#include <CGAL/version_macros.h>
 
 #include <algorithm>
 #include <array>
@@ -95,6 +106,7 @@ struct Reference_ridge
   std::size_t failed_samples = 0;   ///< queries with no path (disconnected) or a degenerate leg
   std::size_t pairs = 0;            ///< neighbouring sample pairs tested
   std::size_t crossings = 0;        ///< pairs with two fronts (before the jump / source filters)
+  std::size_t border_edges = 0;     ///< edges with one face: no pair is formed across them
   double time_solve = 0, time_queries = 0, time_total = 0; ///< seconds
 };
 
@@ -374,7 +386,7 @@ reference_ridge_impl(const TriangleMesh& tm, SMSP& sp, const std::array<double, 
   for(auto e : edges(tm))
   {
     const halfedge_descriptor h = halfedge(e, tm), ho = opposite(h, tm);
-    if(is_border(h, tm) || is_border(ho, tm)) continue;
+    if(is_border(h, tm) || is_border(ho, tm)) { ++R.border_edges; continue; }
     const std::size_t fi = static_cast<std::size_t>(get(CGAL::face_index, tm, face(h, tm)));
     const std::size_t gi = static_cast<std::size_t>(get(CGAL::face_index, tm, face(ho, tm)));
     auto side_of = [&](std::size_t fidx, halfedge_descriptor hh) {
@@ -455,8 +467,38 @@ auto reference_ridge(const TriangleMesh& tm, typename boost::graph_traits<Triang
   return internal::reference_ridge_impl(tm, sp, internal::to_v3(get(CGAL::vertex_point, tm, s)), opt, setup);
 }
 
+namespace internal {
+
+// The coordinates to give SMSP for a source point. CGAL before 5.6 expands a
+// source on an edge (one coordinate 0) wrongly (CGAL issue #6681, fixed by pull
+// request #6739): on an inner edge no cone starts towards the edge's ends
+// (measured on the flat square: distances up to 0.31 too long, 1.25 edges); on
+// a BORDER edge the source is put at the mirror image of its position along the
+// edge (`expand_edge_root()` passes the edge source's coordinate where
+// `face_location()` takes the target's; measured: off by |1 - 2t| of the edge).
+// The point is moved into its face by 2^-40 of the barycentric range instead,
+// as the package's Exact_solver does: distances change by about 1e-13 of an edge.
+template <class FT>
+std::array<FT, 3> smsp_source_coordinates(std::array<FT, 3> w)
+{
+#if CGAL_VERSION_NR < CGAL_VERSION_NUMBER(5, 6, 0)
+  int zeros = 0;
+  for(const FT& x : w) zeros += (x == FT(0));
+  if(zeros == 1)
+  {
+    const FT nudge = FT(1) / FT(1099511627776.0);
+    for(FT& x : w) x = (x == FT(0)) ? nudge : x * (FT(1) - nudge);
+  }
+#endif
+  return w;
+}
+
+} // namespace internal
+
 /// The exact reference ridge of a source at a surface point (face, barycentric
-/// coordinates in CGAL's order).
+/// coordinates in CGAL's order). A point of an edge, border or not, is moved
+/// into the face by 2^-40 of the barycentric range with CGAL < 5.6
+/// (`internal::smsp_source_coordinates()`).
 template <class TriangleMesh, class FT>
 auto reference_ridge(const TriangleMesh& tm,
                      const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor, std::array<FT, 3> >& loc,
@@ -464,10 +506,12 @@ auto reference_ridge(const TriangleMesh& tm,
 {
   const auto t0 = std::chrono::steady_clock::now();
   internal::SMSP_for<TriangleMesh> sp(tm);
-  typename internal::SMSP_for<TriangleMesh>::Barycentric_coordinates b = {{loc.second[0], loc.second[1], loc.second[2]}};
+  const std::array<FT, 3> w = internal::smsp_source_coordinates(loc.second);
+  typename internal::SMSP_for<TriangleMesh>::Barycentric_coordinates b = {{w[0], w[1], w[2]}};
   sp.add_source_point(loc.first, b);
   const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return internal::reference_ridge_impl(tm, sp, internal::to_v3(sp.point(loc.first, b)), opt, setup);
+  typename internal::SMSP_for<TriangleMesh>::Barycentric_coordinates given = {{loc.second[0], loc.second[1], loc.second[2]}};
+  return internal::reference_ridge_impl(tm, sp, internal::to_v3(sp.point(loc.first, given)), opt, setup);
 }
 
 // ----------------------------------------------------------------------------
