@@ -834,3 +834,105 @@ TEST_CASE("surfaces with a border: the ridge with the border is connected, with 
       }
   }
 }
+
+// The analytic cases with a border (test/support/analytic_meshes.h): flat
+// simply connected domains have no ridge; the flat annulus's ridge is the arc
+// behind the hole; the open box's, from the bottom centre, its four vertical
+// edges; every case has the ridge with the border connected, of rank 2g + b.
+TEST_CASE("surfaces with a border: analytic cases", "[ridge_curve][border]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  const unsigned seed = test_seed(20261202);
+  auto compute = [](const Mesh& m, vertex_descriptor s, bool exact) {
+    return exact ? Geodesic_ridge::compute_ridge_curve(m, s)
+                 : Geodesic_ridge::compute_ridge_curve(m, s, p::solver(Geodesic_ridge::Fast_marching_solver()));
+  };
+  auto check_topology = [](const Surface_with_boundary& c, const Result& rc) {
+    CHECK(rc.rough_cut_locus.statistics.number_of_boundary_loops == std::size_t(c.boundary_loops));
+    CHECK(rc.rough_cut_locus.statistics.genus == c.genus);
+    CHECK(rc.statistics.ridge.components == 1);
+    CHECK(rc.statistics.ridge.cycles == std::size_t(c.cycle_rank()));
+  };
+  const Flat_square square = make_flat_square(10, 0.2, seed);
+  const Flat_L_domain ell = make_flat_L_domain(8, 0.2, seed);
+  const Half_cylinder half = make_half_cylinder(12, 1, 2, 0.2, seed);
+  for(const Surface_with_boundary* c : {static_cast<const Surface_with_boundary*>(&square),
+                                        static_cast<const Surface_with_boundary*>(&ell),
+                                        static_cast<const Surface_with_boundary*>(&half)})
+    for(vertex_descriptor s : {vertex_descriptor(static_cast<Mesh::size_type>(c->mesh.number_of_vertices() / 2)),
+                               border_vertices(c->mesh).front()})
+      for(bool exact : {true, false})
+      {
+        INFO(c->name << " seed " << seed << " source " << s << (exact ? " exact" : " fmm"));
+        const Result rc = compute(c->mesh, s, exact);
+        check_topology(*c, rc);
+        CHECK(rc.rough_cut_locus.cut_edges.empty());
+        double length = 0;
+        for(const auto& pl : rc.polylines)
+          for(std::size_t i = 0; i + 1 < pl.size(); ++i) length += std::sqrt(CGAL::squared_distance(pl[i].point, pl[i + 1].point));
+        std::cout << "[ridge_curve] " << c->name << " source " << s << (exact ? " exact" : " fmm") << ": ridge length "
+                  << length / mean_edge_length(c->mesh) << " mean edges (the exact ridge is empty)\n";
+        if(exact) CHECK(rc.polylines.empty());
+      }
+
+  const Flat_annulus annulus = make_flat_annulus(24, 1, 3, 0.2, seed);
+  const double h = mean_edge_length(annulus.mesh);
+  for(vertex_descriptor s : {annulus.grid[3 + 24 * 1], annulus.grid[7 + 24 * annulus.rings]})
+  {
+    INFO("flat annulus seed " << seed << " source " << s);
+    const Result rc = compute(annulus.mesh, s, true);
+    check_topology(annulus, rc);
+    const auto arc = annulus.ridge(annulus.mesh.point(s));
+    double precision = 0, recall = 0;
+    for_each_ridge_sample(rc.polylines, 8, [&](const Point_3& q, std::size_t) {
+      precision = std::max(precision, arc.distance_to_ridge({{q.x(), q.y()}}) / h);
+    });
+    for(const auto& a : arc.polyline())
+      recall = std::max(recall, distance_to_ridge(Point_3(a[0], a[1], 0), rc.polylines) / h);
+    std::cout << "[ridge_curve] flat annulus source " << s << ": farthest ridge point " << precision
+              << " mean edges from the arc, farthest arc point " << recall << " from the ridge\n";
+    CHECK(precision <= 0.5);
+    CHECK(recall <= 0.5);
+  }
+
+  const Open_box box = make_open_box(12, 0, seed);
+  {
+    const vertex_descriptor s = nearest_vertex(box.mesh, Point_3(0.5, 0.5, 0));
+    const double hb = mean_edge_length(box.mesh);
+    for(bool exact : {true, false})
+    {
+      INFO("open box, bottom centre " << s << (exact ? " exact" : " fmm"));
+      const Result rc = compute(box.mesh, s, exact);
+      check_topology(box, rc);
+      // precision as the accuracy benchmark measures it, p95 of the samples.
+      // KNOWN (issue 13 stays open): one edge before each bottom corner the
+      // ridge forks into two short branches (1.3 edges long) that end on the
+      // bottom edges, at the corner's neighbours, instead of running into the
+      // corner: measured p95 0.67, max 0.88 mean edges (n = 12). The vertical
+      // edges themselves are found within 0.02 mean edges.
+      double recall = 0;
+      std::vector<double> off;
+      for_each_ridge_sample(rc.polylines, 8, [&](const Point_3& q, std::size_t) {
+        off.push_back(Open_box::distance_to_bottom_centre_ridge(q) / hb);
+      });
+      std::sort(off.begin(), off.end());
+      const double precision = off.empty() ? 0 : off[std::size_t(0.95 * double(off.size() - 1))];
+      for(double x : {0.0, 1.0})
+        for(double y : {0.0, 1.0})
+          for(double z = 0.1; z < 0.95; z += 0.1)
+            recall = std::max(recall, distance_to_ridge(Point_3(x, y, z), rc.polylines) / hb);
+      std::cout << "[ridge_curve] open box" << (exact ? " exact" : " fmm") << ": ridge points p95 " << precision
+                << " (max " << (off.empty() ? 0 : off.back()) << ") mean edges from the vertical edges, farthest edge point "
+                << recall << " from the ridge\n";
+      CHECK(recall <= 0.5);
+      if(exact) CHECK(precision <= 1.0);
+    }
+  }
+
+  const Torus_with_hole torus = make_torus_with_hole(16, 1, 0.4, 2, 0.2, seed);
+  for(bool exact : {true, false})
+  {
+    INFO("torus with a hole seed " << seed << (exact ? " exact" : " fmm"));
+    check_topology(torus, compute(torus.mesh, vertex_descriptor(0), exact));
+  }
+}
