@@ -984,18 +984,14 @@ private:
   // the result, filled step by step
   Rough_cut_locus<TriangleMesh> r_;
   Rough_cut_locus_statistics& st_;
-  // elements by index; the seeds of the source
+  // elements by index; per vertex: a seed of the source, on the border
   std::vector<edge_descriptor> edge_of_;
   std::vector<face_descriptor> face_of_;
-  std::vector<char> is_seed_;
-  // the border's vertices
-  std::vector<char> boundary_vertex_;
-  // step 1: edge lengths
-  std::vector<double> length_;
-  // step 2: areas, the dual graph (by position d in r_.dual_edges), curvature,
-  // and the peeling: per dual edge its child face (the side peeled first) and
-  // the curvature beyond it
-  std::vector<double> area_;
+  std::vector<char> is_seed_, boundary_vertex_;
+  // step 1: edge lengths; step 2: areas, the dual graph (by position d in
+  // r_.dual_edges), curvature, and the peeling: per dual edge its child face
+  // (the side peeled first) and the curvature beyond it
+  std::vector<double> length_, area_;
   double node_total_ = 0;
   std::size_t nd_ = 0;
   std::vector<std::array<std::size_t, 2> > dual_faces_of_;

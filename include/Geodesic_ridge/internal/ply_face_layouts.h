@@ -148,16 +148,24 @@ inline void strips_to_triangles(const std::vector<std::vector<std::size_t>>& str
   }
 }
 
+// Reads the properties of the element's next item; false on a read error.
+inline bool read_item(std::istream& in, PLY_element& element)
+{
+  for(std::size_t k = 0; k < element.number_of_properties(); ++k)
+  {
+    element.property(k)->get(in);
+    if(in.fail())
+      return false;
+  }
+  return true;
+}
+
 // Skips the items of an element nobody reads.
 inline bool skip(std::istream& in, PLY_element& element)
 {
   for(std::size_t j = 0; j < element.number_of_items(); ++j)
-    for(std::size_t k = 0; k < element.number_of_properties(); ++k)
-    {
-      element.property(k)->get(in);
-      if(in.fail())
-        return false;
-    }
+    if(!read_item(in, element))
+      return false;
   return true;
 }
 
@@ -166,12 +174,8 @@ bool read_points(std::istream& in, PLY_element& element, std::vector<Point>& poi
 {
   for(std::size_t j = 0; j < element.number_of_items(); ++j)
   {
-    for(std::size_t k = 0; k < element.number_of_properties(); ++k)
-    {
-      element.property(k)->get(in);
-      if(in.fail())
-        return false;
-    }
+    if(!read_item(in, element))
+      return false;
     Point p;
     CGAL::IO::internal::process_properties(element, p,
                                            CGAL::IO::make_ply_point_reader(CGAL::Identity_property_map<Point>()));
