@@ -12,6 +12,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "support/message_of.h"
+
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -182,26 +184,7 @@ std::string to_binary_ply(const Soup& s)
   return out;
 }
 
-// The message of the exception of type E thrown by f; fails the test if f
-// throws nothing or another type.
-template <class E, class F>
-std::string message_of(F&& f)
-{
-  try
-  {
-    f();
-  }
-  catch(const E& e)
-  {
-    return e.what();
-  }
-  catch(const std::exception& e)
-  {
-    FAIL("expected another exception type, got: " << e.what());
-  }
-  FAIL("no exception thrown");
-  return {};
-}
+using Geodesic_ridge::testing::message_of;
 
 bool is_one_line(const std::string& s) { return !s.empty() && s.find('\n') == std::string::npos; }
 
