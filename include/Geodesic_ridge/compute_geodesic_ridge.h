@@ -832,8 +832,8 @@ auto ridge_curve_impl(const TriangleMesh& tm, const Geodesic_source<TriangleMesh
 } // namespace internal
 
 /// \ingroup PkgGeodesicRidgeRef
-/// \brief computes the geodesic ridge of the vertex `source` on the closed
-/// triangle mesh `tm`, and returns a `Ridge_curve<TriangleMesh, Point_3>`
+/// \brief computes the geodesic ridge of the vertex `source` on the triangle
+/// mesh `tm` (closed or with a border), and returns a `Ridge_curve<TriangleMesh, Point_3>`
 /// (`Point_3` the value type of the vertex point map) with everything
 /// computed on the way.
 ///
@@ -852,7 +852,7 @@ auto ridge_curve_impl(const TriangleMesh& tm, const Geodesic_source<TriangleMesh
 ///        `target(halfedge(f))`, `target(next(halfedge(f)))`
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
-/// \pre `tm` is a closed, connected, manifold, consistently oriented triangle
+/// \pre `tm` is a connected, manifold (closed or with a border), consistently oriented triangle
 ///      mesh with finite coordinates, no isolated vertex, no duplicate face and
 ///      no zero-area face (checked first by `validate_triangle_mesh()`:
 ///      `Invalid_mesh_error` otherwise).
@@ -976,7 +976,7 @@ auto compute_ridge_curve(const TriangleMesh& tm,
 
 /// \ingroup PkgGeodesicRidgeRef
 /// \brief computes the geodesic ridge of the surface point `source` (a
-/// `Face_location`) on the closed triangle mesh `tm`, and returns a
+/// `Face_location`) on the triangle mesh `tm` (closed or with a border), and returns a
 /// `Ridge_curve<TriangleMesh, Point_3>` with everything computed on the way.
 /// A location on an edge or at a vertex is handled as such.
 ///

@@ -1039,7 +1039,7 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 } // namespace internal
 
 /// \ingroup PkgGeodesicRidgeRef
-/// Computes the rough cut locus of `source` on the closed triangle mesh `tm`:
+/// Computes the rough cut locus of `source` on the triangle mesh `tm` (closed or with a border):
 /// the shortest-path tree, the significance of the edges of its dual, the
 /// pruning by `tolerance`, and the cut graph K (\ref GeodesicRidgeSecStage1).
 ///
@@ -1050,7 +1050,7 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
 /// \param source a vertex of `tm`
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
-/// \pre `tm` is a closed, connected, manifold, consistently oriented triangle
+/// \pre `tm` is a connected, manifold (closed or with a border), consistently oriented triangle
 ///      mesh with finite coordinates, no isolated vertex, no duplicate face and
 ///      no zero-area face (checked first by `validate_triangle_mesh()`:
 ///      `Invalid_mesh_error` otherwise).
