@@ -251,8 +251,12 @@ private:
       typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
     const Mesh_point q(p.x(), p.y(), p.z());
     std::optional<Face_location> best;
+    const auto vpm = get(CGAL::vertex_point, tm);
     for(face_descriptor f : candidates)
     {
+      const auto h = halfedge(f, tm);
+      if(CGAL::collinear(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm))))
+        continue; // a zero-area face has no barycentric coordinates (exact predicate)
       const auto loc = CGAL::Polygon_mesh_processing::locate_in_face(q, f, tm);
       const Face_location l(f, {{CGAL::to_double(loc.second[0]), CGAL::to_double(loc.second[1]),
                                  CGAL::to_double(loc.second[2])}});
