@@ -255,8 +255,9 @@ private:
     for(face_descriptor f : candidates)
     {
       const auto h = halfedge(f, tm);
-      if(CGAL::collinear(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm))))
-        continue; // a zero-area face has no barycentric coordinates (exact predicate)
+      if(!internal::repair::has_barycentric_coordinates(get(vpm, source(h, tm)), get(vpm, target(h, tm)),
+                                                        get(vpm, target(next(h, tm), tm))))
+        continue; // a degenerate face holds no point
       const auto loc = CGAL::Polygon_mesh_processing::locate_in_face(q, f, tm);
       const Face_location l(f, {{CGAL::to_double(loc.second[0]), CGAL::to_double(loc.second[1]),
                                  CGAL::to_double(loc.second[2])}});
@@ -299,7 +300,7 @@ private:
     double best = -std::numeric_limits<double>::infinity();
     for(const ir::Tracked_polygon& t : soup.polygons)
     {
-      if(t.size() != 3)
+      if(t.size() != 3 || !ir::has_barycentric_coordinates(points[t[0]], points[t[1]], points[t[2]]))
         continue;
       const auto b = CGAL::Polygon_mesh_processing::barycentric_coordinates(points[t[0]], points[t[1]],
                                                                             points[t[2]], p);

@@ -40,6 +40,20 @@ using validation::to_epick;
 
 constexpr std::size_t no_index = (std::numeric_limits<std::size_t>::max)();
 
+// Whether triangle pqr has barycentric coordinates: its corners are not
+// collinear (exact predicate) and, in the floating-point kernel, the Gram
+// determinant that CGAL's `barycentric_coordinates()` divides by (and asserts
+// on) is not zero.
+template <class Point_3>
+bool has_barycentric_coordinates(const Point_3& p, const Point_3& q, const Point_3& r)
+{
+  if(CGAL::collinear(p, q, r))
+    return false;
+  const auto v0 = q - p;
+  const auto v1 = r - p;
+  return (v0 * v0) * (v1 * v1) - (v0 * v1) * (v0 * v1) != 0;
+}
+
 // A polygon that carries the file face it comes from. CGAL's soup functions
 // move, swap, erase and reverse whole polygons, so the file face goes along.
 struct Tracked_polygon : std::vector<std::size_t>
@@ -379,9 +393,12 @@ std::size_t file_face_of_centroid(const CGAL::Surface_mesh<Epick::Point_3>& mesh
   for(std::size_t t : candidates)
   {
     const Tracked_polygon& p = before.polygons[t];
-    const auto b = PMP::barycentric_coordinates(to_epick(file_points[before.point_file[p[0]]]),
-                                                to_epick(file_points[before.point_file[p[1]]]),
-                                                to_epick(file_points[before.point_file[p[2]]]), centroid);
+    const std::array<Epick::Point_3, 3> c{{to_epick(file_points[before.point_file[p[0]]]),
+                                           to_epick(file_points[before.point_file[p[1]]]),
+                                           to_epick(file_points[before.point_file[p[2]]])}};
+    if(!has_barycentric_coordinates(c[0], c[1], c[2]))
+      continue; // a degenerate face holds no point
+    const auto b = PMP::barycentric_coordinates(c[0], c[1], c[2], centroid);
     const double score = (std::min)({b[0], b[1], b[2]});
     if(score > best_score)
     {
