@@ -23,6 +23,7 @@
 #include <Geodesic_ridge/IO/polylines.h>
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/connected_component.h>
 #include <Geodesic_ridge/distance_field.h>
 #include <Geodesic_ridge/isolines.h>
 #include <Geodesic_ridge/refined_mesh.h>
@@ -31,6 +32,8 @@
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
+#include <CGAL/boost/graph/Face_filtered_graph.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/bounding_box.h>
 
 #include <boost/program_options.hpp>
@@ -61,6 +64,7 @@ typedef Geodesic_ridge::Ridge_curve<Mesh, Point_3>          Ridge;
 typedef std::vector<std::vector<Geodesic_ridge::Ridge_point<Point_3> > > Ridge_polylines;
 typedef Mesh::Property_map<vertex_descriptor, double>       Distance_map;
 typedef Geodesic_ridge::File_index_map<Mesh>                File_map;
+typedef Geodesic_ridge::Connected_component_map<Mesh>       Component_map;
 typedef nlohmann::ordered_json                              Json; // keys stay in the order written
 namespace po = boost::program_options;
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -85,7 +89,9 @@ const char* synopsis =
     "  stats' source, the refined mesh's 'source_face'. A point on a polygon is located among its triangles;\n"
     "  barycentric coordinates (--query-barycentric, --ridge-locations) have one value per vertex of the\n"
     "  file face, in file order: for a polygon, those of the point in the triangle of it that holds the\n"
-    "  point, 0 for its other vertices.\n\n";
+    "  point, 0 for its other vertices.\n"
+    "  A mesh in several parts: the ridge is that of the source's connected component; the others are\n"
+    "  unreachable (a note on stderr): 'inf' in --query-out, distance -1 in --refined, grey in --png.\n\n";
 
 std::size_t parse_index(const std::string& what, const std::string& s)
 {
@@ -180,7 +186,8 @@ po::options_description describe()
                                      "order of the face's vertices, one value per vertex; ANGLE: degrees between the "
                                      "fronts)")
     ("refined", text("OUT.ply"), "the ridge-refined mesh: faces the ridge crosses split along it, a 'distance' per "
-                                 "vertex, a 'source_face' per face (binary PLY; --ply-ascii for ASCII)")
+                                 "vertex (-1: unreachable, in another connected component), a 'source_face' per face (binary PLY; "
+                                 "--ply-ascii for ASCII)")
     ("ply-ascii", po::bool_switch(), "write the refined mesh as ASCII PLY")
     ("isolines", new Tokens(2, "N OUT"), "N iso-lines equally spaced strictly between 0 and the largest distance, "
                                          "as CGAL polylines, from the region-wise field")
@@ -191,7 +198,8 @@ po::options_description describe()
                               "its size), or with --query-barycentric 'FACE B0 B1 B2' (summing to 1 within 1e-9; "
                               "one value per vertex of the file face); '#' starts a comment")
     ("query-barycentric", po::bool_switch(), "the queries are barycentric coordinates")
-    ("query-out", text("OUT"), "the distances, one per line in the order of IN, 17 digits")
+    ("query-out", text("OUT"), "the distances, one per line in the order of IN, 17 digits; 'inf' for a point in "
+                               "another connected component than the source's")
     ("field", text("KIND"), "the field the queries evaluate: linear (default, the paper's region-wise linear "
                             "field) or cone (exact solver only: per face copy, the exact solver's cones; --ridge, "
                             "--ridge-locations and the picture's ridge are where the cones meet; the refined mesh, "
@@ -481,7 +489,8 @@ GEODESIC_RIDGE_JSON_FIELDS(Repair_statistics, triangulated_polygons, non_planar_
 namespace {
 
 void write_stats(const std::string& filename, const Options& o, const Ridge& rc, const Mesh& mesh,
-                 const File_map& map, double read_seconds, const Geodesic_ridge::Refined_mesh_statistics* refined)
+                 const File_map& map, const Component_map* cc, double read_seconds,
+                 const Geodesic_ridge::Refined_mesh_statistics* refined)
 {
   const auto& r = rc.rough_cut_locus;
   const auto& s = r.statistics;
@@ -494,6 +503,9 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
                             {"repair", o.repair}}},
             {"input", {{"file_vertices", map.number_of_file_vertices()},
                        {"file_faces", map.number_of_file_faces()},
+                       {"connected_components", cc ? cc->number_of_components() : 1},
+                       {"other_components_vertices", cc ? cc->number_of_other_vertices() : 0},
+                       {"other_components_faces", cc ? cc->number_of_other_faces() : 0},
                        {"triangulation_and_repair", map.statistics()}}},
             {"mesh", {{"vertices", s.number_of_vertices}, {"edges", s.number_of_edges},
                       {"faces", s.number_of_faces}, {"genus", s.genus}, {"total_area", r.total_area}}},
@@ -536,17 +548,25 @@ vertex_descriptor source_vertex(const Mesh& mesh, const File_map& map, std::size
   return *found;
 }
 
-// The ridge of the source the options name; the solver is a type: one call per model.
-Ridge compute(const Mesh& mesh, const File_map& map, const Options& o)
+// The source the options name, on the mesh as read: a vertex or a point.
+struct Source
 {
-  namespace p = Geodesic_ridge::parameters;
-  auto compute = [&](const auto& source) {
-    if(o.solver == "fmm")
-      return Geodesic_ridge::compute_ridge_curve(
-          mesh, source, p::tolerance(o.tolerance, p::solver(Geodesic_ridge::Fast_marching_solver())));
-    return Geodesic_ridge::compute_ridge_curve(mesh, source, p::tolerance(o.tolerance, p::field(o.field)));
-  };
-  if(o.source_vertex) return compute(source_vertex(mesh, map, *o.source_vertex));
+  std::optional<vertex_descriptor> vertex;
+  Location point;
+
+  // a face that holds the source
+  face_descriptor face(const Mesh& mesh) const
+  {
+    if(!vertex) return point.first;
+    for(face_descriptor f : CGAL::faces_around_target(mesh.halfedge(*vertex), mesh))
+      if(f != Mesh::null_face()) return f;
+    return Mesh::null_face(); // (a validated mesh has no isolated vertex)
+  }
+};
+
+Source named_source(const Mesh& mesh, const File_map& map, const Options& o)
+{
+  if(o.source_vertex) return {source_vertex(mesh, map, *o.source_vertex), Location()};
   if(*o.source_face >= map.number_of_file_faces())
     throw Geodesic_ridge::Invalid_source_error(
         "source face " + std::to_string(*o.source_face) + " is out of range: the mesh has " +
@@ -558,7 +578,52 @@ Ridge compute(const Mesh& mesh, const File_map& map, const Options& o)
   const Point_3 q(parse_number("source x", o.source_point_text[0]),
                   parse_number("source y", o.source_point_text[1]),
                   parse_number("source z", o.source_point_text[2]));
-  return compute(locate(map, mesh, *o.source_face, q));
+  return {std::nullopt, locate(map, mesh, *o.source_face, q)};
+}
+
+// The source's connected component copied into `component` when the mesh has
+// several (said on stderr: the others are unreachable); none if it has one.
+std::optional<Component_map> source_component(const Mesh& mesh, const Source& source, Mesh& component)
+{
+  std::vector<std::size_t> id(mesh.number_of_faces());
+  if(PMP::connected_components(mesh, boost::make_iterator_property_map(id.begin(), get(CGAL::face_index, mesh))) < 2)
+    return std::nullopt;
+  Component_map cc = Geodesic_ridge::extract_connected_component(mesh, source.face(mesh), component);
+  const std::size_t others = cc.number_of_components() - 1;
+  std::cerr << "geodesic_ridge: note: the mesh has " << cc.number_of_components()
+            << " connected components; the ridge is that of the source's (" << component.number_of_faces()
+            << " of " << mesh.number_of_faces() << " faces); the other " << others << " ("
+            << cc.number_of_other_faces() << " faces) " << (others == 1 ? "is" : "are")
+            << " unreachable from it\n";
+  return cc;
+}
+
+// The source in the component.
+Source in_component(const Component_map& cc, const Source& source)
+{
+  if(source.vertex) return {*cc.component_vertex(*source.vertex), Location()};
+  return {std::nullopt, *cc.component_location(source.point)};
+}
+
+// The queries in the component: none for a point of another component.
+std::vector<std::optional<Location> > in_component(const Component_map* cc, const std::vector<Location>& queries)
+{
+  std::vector<std::optional<Location> > result;
+  for(const Location& q : queries) result.push_back(cc ? cc->component_location(q) : std::optional<Location>(q));
+  return result;
+}
+
+// The ridge of the source; the solver is a type: one call per model.
+Ridge compute(const Mesh& mesh, const Source& source, const Options& o)
+{
+  namespace p = Geodesic_ridge::parameters;
+  auto compute = [&](const auto& s) {
+    if(o.solver == "fmm")
+      return Geodesic_ridge::compute_ridge_curve(
+          mesh, s, p::tolerance(o.tolerance, p::solver(Geodesic_ridge::Fast_marching_solver())));
+    return Geodesic_ridge::compute_ridge_curve(mesh, s, p::tolerance(o.tolerance, p::field(o.field)));
+  };
+  return source.vertex ? compute(*source.vertex) : compute(source.point);
 }
 
 void print_summary(const Options& o, const Ridge& ridge, const File_map& map)
@@ -613,6 +678,25 @@ Geodesic_ridge::Refined_mesh_statistics refine(const Mesh& mesh, const File_map&
   return st;
 }
 
+// The faces of the other components, added to the refined mesh as they are:
+// unreachable (distance infinity, -1 in the PLY), with their file face.
+void append_other_components(const Mesh& file_mesh, const File_map& file_map, const Component_map& cc,
+                             Mesh& refined, Distance_map distance)
+{
+  std::vector<face_descriptor> others;
+  for(face_descriptor f : file_mesh.faces())
+    if(!cc.component_face(f)) others.push_back(f);
+  const CGAL::Face_filtered_graph<Mesh> part(file_mesh, others);
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor> > v2v;
+  std::vector<std::pair<face_descriptor, face_descriptor> > f2f;
+  CGAL::copy_face_graph(part, refined,
+                        CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v))
+                            .face_to_face_output_iterator(std::back_inserter(f2f)));
+  auto source_face = refined.property_map<face_descriptor, std::int32_t>("f:source_face").first;
+  for(const auto& [from, to] : v2v) distance[to] = std::numeric_limits<double>::infinity();
+  for(const auto& [from, to] : f2f) source_face[to] = static_cast<std::int32_t>(file_map.file_face(from, file_mesh));
+}
+
 void write_refined(const std::string& filename, const Mesh& refined, bool ascii)
 {
   std::ofstream os(filename, std::ios::binary);
@@ -623,6 +707,10 @@ void write_refined(const std::string& filename, const Mesh& refined, bool ascii)
   Mesh copy = refined;
   auto ridge_flags = copy.property_map<Mesh::Edge_index, bool>("e:ridge").first;
   copy.remove_property_map(ridge_flags);
+  // the documented sentinel of "unreachable": every reader takes -1, not all take inf
+  auto distance = copy.property_map<vertex_descriptor, double>("v:distance").first;
+  for(vertex_descriptor v : copy.vertices())
+    if(!std::isfinite(distance[v])) distance[v] = -1;
   os.precision(17);
   if(!CGAL::IO::write_PLY(os, copy, "geodesic distance field, refined along the geodesic ridge") || !os)
     throw Geodesic_ridge::Error("cannot write '" + filename + "'");
@@ -659,12 +747,19 @@ void write_ridge_locations(const std::string& filename, const Ridge_polylines& r
   std::cout << "wrote " << filename << " (" << points << " ridge points)\n";
 }
 
+// The distances of the queries; infinity for a point of another component.
 template <class Field>
-void write_distances(const std::string& filename, const Field& field, const std::vector<Location>& queries)
+void write_distances(const std::string& filename, const Field& field,
+                     const std::vector<std::optional<Location> >& queries)
 {
+  std::vector<Location> reachable;
+  for(const auto& q : queries) if(q) reachable.push_back(*q);
+  std::vector<double> found;
+  found.reserve(reachable.size());
+  field.distances(reachable, std::back_inserter(found));
   std::vector<double> distances;
-  distances.reserve(queries.size());
-  field.distances(queries, std::back_inserter(distances));
+  auto next = found.begin();
+  for(const auto& q : queries) distances.push_back(q ? *next++ : std::numeric_limits<double>::infinity());
   std::ofstream os(filename);
   if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
   os.precision(17);
@@ -680,7 +775,8 @@ template <class VertexDistance>
 void contour(const Options& o, const Mesh& contoured, const VertexDistance& vertex_distance)
 {
   double largest = 0;
-  for(vertex_descriptor v : contoured.vertices()) largest = std::max(largest, vertex_distance(v));
+  for(vertex_descriptor v : contoured.vertices())
+    if(std::isfinite(vertex_distance(v))) largest = std::max(largest, vertex_distance(v));
   const std::vector<double> levels =
       o.isoline_count ? Geodesic_ridge::equally_spaced_levels(*o.isoline_count, largest) : o.isoline_values;
   std::vector<double> values(contoured.number_of_vertices());
@@ -720,8 +816,9 @@ void write_picture(const std::string& filename, const Mesh& mesh, const Ridge& r
   }
   curves[2].rgb = {{20, 170, 40}};
   curves[2].width_pixels = 5;
-  double largest = 0;
-  for(vertex_descriptor v : refined.vertices()) largest = std::max(largest, distance[v]);
+  double largest = 0; // (other components, unreachable, are infinitely far: grey)
+  for(vertex_descriptor v : refined.vertices())
+    if(std::isfinite(distance[v])) largest = std::max(largest, distance[v]);
   Geodesic_ridge::IO::write_png(filename, refined, refined.points(), distance, largest, 20, curves);
   std::cout << "wrote " << filename << "\n";
 }
@@ -735,6 +832,10 @@ struct Report_repair
     const std::string note = st.triangulation_note();
     if(!note.empty()) std::cerr << "geodesic_ridge: note: " << note << "\n";
     for(const std::string& line : st.repair_report()) std::cerr << "geodesic_ridge: " << line << "\n";
+    if(st.repeated_positions > 0)
+      std::cerr << "geodesic_ridge: note: " << st.repeated_positions
+                << (st.repeated_positions == 1 ? " vertex is" : " vertices are") << " at the position of an "
+                << "earlier vertex: the surface is read open or in several parts there (--repair merges them)\n";
   }
 };
 
@@ -749,13 +850,22 @@ int run(const Options& o)
 {
   namespace p = Geodesic_ridge::parameters;
   const auto t0 = std::chrono::steady_clock::now();
-  Mesh mesh;
-  const File_map map = read_mesh(o, mesh);
+  Mesh file_mesh;
+  const File_map file_map = read_mesh(o, file_mesh);
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const Source file_source = named_source(file_mesh, file_map, o);
   // bad queries are reported before the ridge is computed
-  const auto queries =
-      o.query.empty() ? std::vector<Location>() : read_queries(o.query, mesh, map, o.query_barycentric);
-  const Ridge ridge = compute(mesh, map, o);
+  const auto file_queries =
+      o.query.empty() ? std::vector<Location>() : read_queries(o.query, file_mesh, file_map, o.query_barycentric);
+  // the ridge is computed on the source's component, the others unreachable
+  Mesh component;
+  const std::optional<Component_map> cc = source_component(file_mesh, file_source, component);
+  const std::optional<File_map> component_map =
+      cc ? std::optional<File_map>(file_map.restricted_to_component(*cc, file_mesh, component)) : std::nullopt;
+  const Mesh& mesh = cc ? component : file_mesh;
+  const File_map& map = cc ? *component_map : file_map;
+  const auto queries = in_component(cc ? &*cc : nullptr, file_queries);
+  const Ridge ridge = compute(mesh, cc ? in_component(*cc, file_source) : file_source, o);
   print_summary(o, ridge, map);
   // the ridge written and drawn: with the cone field, the cones' own
   const auto& reported = o.field == Geodesic_ridge::Field::cone ? ridge.cone_polylines : ridge.polylines;
@@ -765,7 +875,10 @@ int run(const Options& o)
   const auto refined_distance = refined.add_property_map<vertex_descriptor, double>("v:distance", 0).first;
   std::optional<Geodesic_ridge::Refined_mesh_statistics> refined_stats;
   if(!o.refined.empty() || !o.png.empty() || (!o.isolines.empty() && !o.isolines_from_vertices))
+  {
     refined_stats = refine(mesh, map, ridge, refined, refined_distance);
+    if(cc) append_other_components(file_mesh, file_map, *cc, refined, refined_distance);
+  }
   if(!o.refined.empty()) write_refined(o.refined, refined, o.ply_ascii);
   if(!o.ridge_locations.empty()) write_ridge_locations(o.ridge_locations, reported, mesh, map);
   if(!o.query.empty() && o.field == Geodesic_ridge::Field::cone)
@@ -791,7 +904,8 @@ int run(const Options& o)
   if(!o.png.empty()) write_picture(o.png, mesh, ridge, points_of(reported), refined, refined_distance);
   if(!o.stats.empty())
   {
-    write_stats(o.stats, o, ridge, mesh, map, read_seconds, refined_stats ? &*refined_stats : nullptr);
+    write_stats(o.stats, o, ridge, mesh, map, cc ? &*cc : nullptr, read_seconds,
+                refined_stats ? &*refined_stats : nullptr);
     std::cout << "wrote " << o.stats << "\n";
   }
   return 0;

@@ -111,6 +111,11 @@ endfunction()
 cli_png(torus_1k)
 cli_png(eight --solver fmm)
 
+# A mesh in several parts: the ridge of the source's, the others unreachable.
+add_test(NAME cli.components.cube_and_octahedron
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DCHECK=$<TARGET_FILE:png_check> -DDATA=${B} -DOUT=${OUTDIR}/components
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_components.cmake)
+
 # A surface with a border (one triangle): accepted, an empty ridge.
 add_test(NAME cli.border.open_triangle COMMAND ${CLI} ${B}/open_triangle.off --source-vertex 0)
 
@@ -125,6 +130,11 @@ cli_failure_after_notes(source_vertex_file_range "source vertex 9 is out of rang
 cli_failure_after_notes(query_quad_wrong_count "line 3: expected 'FACE' and 4 coordinates \\(face 0 has 4 vertices\\), got 4 fields"
                         "note: 6 polygons" ${CLI} ${B}/cube_quads.off --source-vertex 0 --query ${B}/queries_torus_1k_barycentric.txt
                         --query-barycentric --query-out ${OUTDIR}/q.txt)
+# a vertex given twice: read with a seam (a slit: open), said in a note
+cli_failure_after_notes(seam_note "source vertex 7 is out of range"
+                        "note: 1 vertex is at the position of an earlier vertex: the surface is read open or in several parts there \\(--repair merges them\\)"
+                        ${CLI} ${B}/octahedron_seam.off --source-vertex 7)
+add_test(NAME cli.border.octahedron_seam COMMAND ${CLI} ${B}/octahedron_seam.off --source-vertex 4)
 # a cube of quads with an isolated vertex inserted as vertex 2, against the cube
 add_test(NAME cli.repair.isolated_vertex_and_quads
          COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DDIRTY=${B}/cube_quads_isolated.off -DDIRTY_SOURCE=5

@@ -19,6 +19,7 @@
 #include "support/extension_checks.h"
 
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
+#include <Geodesic_ridge/connected_component.h>
 #include <Geodesic_ridge/distance_field.h>
 #include <Geodesic_ridge/isolines.h>
 #include <Geodesic_ridge/refined_mesh.h>
@@ -26,6 +27,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/bounding_box.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <catch2/catch.hpp>
@@ -248,6 +250,47 @@ TEST_CASE("distance field: at a vertex the query equals the vertex distance", "[
       CHECK(worst <= 1e-12 * diag);
       CHECK(field.distance(s) == 0);
     }
+}
+
+TEST_CASE("several components: the ridge and field of the source's part are those of the part alone",
+          "[distance_field][components]")
+{
+  // eight.off moved aside, then torus_1k.off: the source on the torus
+  const Mesh torus = read_data_mesh("torus_1k.off");
+  Mesh eight = read_data_mesh("eight.off");
+  for(vertex_descriptor v : eight.vertices())
+    eight.point(v) = Point_3(eight.point(v).x() + 10, eight.point(v).y(), eight.point(v).z());
+  Mesh both;
+  CGAL::copy_face_graph(eight, both);
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor> > v2v;
+  CGAL::copy_face_graph(torus, both, CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(v2v)));
+  std::vector<vertex_descriptor> in_both(torus.number_of_vertices());
+  for(const auto& [from, to] : v2v) in_both[std::size_t(from)] = to;
+
+  const vertex_descriptor s(17);
+  Mesh part;
+  const auto cc = Geodesic_ridge::extract_connected_component(both, *CGAL::faces_around_target(both.halfedge(in_both[17]), both).begin(), part);
+  CHECK(cc.number_of_components() == 2);
+  CHECK(cc.number_of_other_faces() == eight.number_of_faces());
+  CHECK(part.number_of_faces() == torus.number_of_faces());
+  const vertex_descriptor s_part = *cc.component_vertex(in_both[17]);
+  CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(both, in_both[17]), Geodesic_ridge::Invalid_mesh_error);
+
+  const Ridge alone = Geodesic_ridge::compute_ridge_curve(torus, s);
+  const Ridge in_part = Geodesic_ridge::compute_ridge_curve(part, s_part);
+  INFO("torus_1k source vertex 17: ridge length " << alone.statistics.ridge.total_length << " alone, "
+       << in_part.statistics.ridge.total_length << " as a part");
+  CHECK(in_part.statistics.ridge.cycles == 2);
+  CHECK(in_part.statistics.ridge.components == 1);
+  CHECK(std::abs(in_part.statistics.ridge.total_length - alone.statistics.ridge.total_length) <=
+        1e-9 * alone.statistics.ridge.total_length);
+  const auto field_alone = Geodesic_ridge::make_distance_field(torus, alone);
+  const auto field_part = Geodesic_ridge::make_distance_field(part, in_part);
+  double worst = 0;
+  for(vertex_descriptor v : torus.vertices())
+    worst = std::max(worst, std::abs(field_part.distance(*cc.component_vertex(in_both[std::size_t(v)])) -
+                                     field_alone.distance(v)));
+  CHECK(worst <= 1e-9 * diagonal(torus));
 }
 
 TEST_CASE("distance field: exact on the doubly covered square, second order under refinement", "[distance_field]")

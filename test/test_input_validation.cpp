@@ -7,6 +7,7 @@
 // function, and through a Surface_mesh where a halfedge structure can
 // represent the defect.
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
+#include <Geodesic_ridge/connected_component.h>
 #include <Geodesic_ridge/mesh_validation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -16,6 +17,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -471,11 +473,106 @@ TEST_CASE("rule 11: a non-manifold vertex is rejected", "[input][validation]")
   // second fan at a vertex (checked), so a pinched vertex cannot be built.
 }
 
-TEST_CASE("rule 12: several connected components are rejected", "[input][validation]")
+TEST_CASE("rule 12: several connected components: the validation refuses them, the reader keeps them",
+          "[input][validation][components]")
 {
   const Soup s = merged(merged(tetrahedron(), tetrahedron(5)), tetrahedron(10));
-  check_invalid_everywhere(s, "mesh has 3 connected components; only one is supported");
-  check_invalid_surface_mesh(s, "mesh has 3 connected components; only one is supported");
+  const std::string needle = "mesh has 3 connected components; the algorithm takes one "
+                             "(extract_connected_component() copies the source's)";
+  CHECK_THAT(message_of<Invalid_mesh_error>(
+               [&] { Geodesic_ridge::validate_triangle_soup(s.cgal_points(), s.cgal_faces()); }),
+             Contains(needle));
+  check_invalid_surface_mesh(s, needle);
+  Temp_dir dir;
+  for(const std::string& path : {dir.write("m.off", to_off(s)), dir.write("m.obj", to_obj(s)),
+                                 dir.write("m.ply", to_ply(s))})
+  {
+    INFO(path);
+    Mesh tm;
+    Geodesic_ridge::IO::read_triangle_mesh(path, tm);
+    CHECK(tm.number_of_vertices() == 12);
+    CHECK(tm.number_of_faces() == 12);
+  }
+}
+
+TEST_CASE("extract_connected_component: the source's part, and every index and point mapped both ways",
+          "[input][components]")
+{
+  // three tetrahedra, the middle one's vertices and faces listed in reverse
+  Soup middle = tetrahedron(5);
+  std::reverse(middle.points.begin(), middle.points.end());
+  for(auto& f : middle.faces)
+    for(long long& i : f)
+      i = 3 - i;
+  std::reverse(middle.faces.begin(), middle.faces.end());
+  const Soup s = merged(merged(tetrahedron(), middle), tetrahedron(10));
+  Temp_dir dir;
+  Mesh tm;
+  const auto file_map = Geodesic_ridge::IO::read_triangle_mesh(dir.write("m.off", to_off(s)), tm);
+  Mesh part;
+  const auto cc = Geodesic_ridge::extract_connected_component(tm, Mesh::Face_index(6), part);
+  CHECK_THROWS_AS(Geodesic_ridge::extract_connected_component(tm, Mesh::Face_index(0), part),
+                  Geodesic_ridge::Invalid_parameter_error); // not empty
+  CHECK(cc.number_of_components() == 3);
+  CHECK(cc.number_of_other_faces() == 8);
+  CHECK(cc.number_of_other_vertices() == 8);
+  CHECK(part.number_of_faces() == 4);
+  CHECK(part.number_of_vertices() == 4);
+  CHECK_NOTHROW(Geodesic_ridge::validate_triangle_mesh(part));
+  for(Mesh::Vertex_index v : tm.vertices())
+  {
+    const auto c = cc.component_vertex(v);
+    CHECK(bool(c) == (v >= Mesh::Vertex_index(4) && v < Mesh::Vertex_index(8)));
+    if(c)
+    {
+      CHECK(cc.mesh_vertex(*c) == v);
+      CHECK(part.point(*c) == tm.point(v));
+    }
+  }
+  for(Mesh::Face_index f : tm.faces())
+  {
+    const auto c = cc.component_face(f);
+    REQUIRE(bool(c) == (f >= Mesh::Face_index(4) && f < Mesh::Face_index(8)));
+    if(!c)
+      continue;
+    CHECK(cc.mesh_face(*c) == f);
+    // a point of the face: the same point in the part, and back
+    const std::pair<Mesh::Face_index, std::array<double, 3>> loc(f, {{0.5, 0.3, 0.2}});
+    const auto in_part = cc.component_location(loc);
+    REQUIRE(in_part);
+    CHECK(in_part->first == *c);
+    const Point_3 p = CGAL::Polygon_mesh_processing::construct_point(loc, tm);
+    const Point_3 q = CGAL::Polygon_mesh_processing::construct_point(*in_part, part);
+    CHECK(CGAL::squared_distance(p, q) < 1e-28);
+    const auto back = cc.mesh_location(*in_part);
+    CHECK(back.first == f);
+    CHECK(back.second == loc.second); // only reordered, twice
+  }
+  CHECK_FALSE(cc.component_location({Mesh::Face_index(0), {{1, 0, 0}}}));
+
+  // the file's indices, through the part: faces 4-7 and vertices 4-7 are in
+  // it, the others in other components
+  const auto map = file_map.restricted_to_component(cc, tm, part);
+  for(std::size_t j = 0; j < 12; ++j)
+  {
+    const bool inside = j >= 4 && j < 8;
+    CHECK(map.faces(j).size() == (inside ? 1u : 0u));
+    CHECK(map.in_other_component(j) == !inside);
+    CHECK(map.vertices(j).size() == (inside ? 1u : 0u));
+    CHECK(map.vertex_in_other_component(j) == !inside);
+    CHECK_FALSE(file_map.in_other_component(j));
+  }
+  for(Mesh::Face_index f : part.faces())
+  {
+    const std::pair<Mesh::Face_index, std::array<double, 3>> loc(f, {{0.2, 0.3, 0.5}});
+    const auto a = map.file_location(loc, part);
+    const auto b = file_map.file_location(cc.mesh_location(loc), tm);
+    CHECK(a.face == b.face);
+    CHECK(a.coordinates == b.coordinates);
+    CHECK(map.file_face(f, part) == file_map.file_face(cc.mesh_face(f), tm));
+  }
+  for(Mesh::Vertex_index v : part.vertices())
+    CHECK(map.file_vertex(v, part) == file_map.file_vertex(cc.mesh_vertex(v), tm));
 }
 
 TEST_CASE("rule 13: a face with exactly collinear corners is rejected, with no epsilon", "[input][validation]")

@@ -7,6 +7,7 @@
 #ifndef GEODESIC_RIDGE_FILE_INDEX_MAP_H
 #define GEODESIC_RIDGE_FILE_INDEX_MAP_H
 
+#include <Geodesic_ridge/connected_component.h>
 #include <Geodesic_ridge/repair.h>
 
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -25,6 +26,15 @@
 #include <vector>
 
 namespace Geodesic_ridge {
+namespace internal {
+
+// vertices(tm) and faces(tm), where the names are the map's member functions
+template <class Graph>
+auto vertices_of(const Graph& g) { return vertices(g); }
+template <class Graph>
+auto faces_of(const Graph& g) { return faces(g); }
+
+} // namespace internal
 
 /// \ingroup PkgGeodesicRidgeRef
 /// A point of a face of a mesh file, in the file's terms: the file face and
@@ -55,10 +65,12 @@ struct File_face_location
 /// (what a user gives) to a `Face_location` of the mesh, and a `Face_location`
 /// (what the algorithm gives) to a `File_face_location`.
 ///
-/// The mesh must be the one the reader built, unchanged: the map refers to its
-/// vertices and faces by descriptor, and to their indices through the
-/// initialized vertex and face index maps of `tm` (for a `CGAL::Surface_mesh`,
-/// the order in which the reader added them).
+/// The mesh must be the one the reader built, unchanged, or the component of
+/// it that `extract_connected_component()` copied, with the map that
+/// `restricted_to_component()` makes: the map refers to the mesh's vertices
+/// and faces by descriptor, and to their indices through its initialized
+/// vertex and face index maps (for a `CGAL::Surface_mesh`, the order in
+/// which they were added).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` with an internal
 ///         `CGAL::vertex_point` property map
@@ -99,6 +111,57 @@ public:
     bucket(vertex_to_file_, file_points_.size(), vertex_begin_, vertex_order_);
     bucket(face_to_file_, file_faces_.size(), face_begin_, face_order_);
   }
+
+  /// The map of `component`, the connected component of `tm` that
+  /// `extract_connected_component()` copied (`cc` is its map), where this is
+  /// the map of `tm`: the file's vertices and faces are those of `component`,
+  /// and the ones in the other components of `tm` have none
+  /// (`in_other_component()`, `vertex_in_other_component()`).
+  File_index_map restricted_to_component(const Connected_component_map<TriangleMesh>& cc, const TriangleMesh& tm,
+                                         const TriangleMesh& component) const
+  {
+    File_index_map r;
+    r.file_points_ = file_points_;
+    r.file_faces_ = file_faces_;
+    r.merged_into_ = merged_into_;
+    r.statistics_ = statistics_;
+    const auto vim = CGAL::get_initialized_vertex_index_map(component);
+    const auto fim = CGAL::get_initialized_face_index_map(component);
+    r.vertex_to_file_.resize(num_vertices(component));
+    r.vertices_.resize(num_vertices(component));
+    for(vertex_descriptor v : internal::vertices_of(component))
+    {
+      const std::size_t i = static_cast<std::size_t>(get(vim, v));
+      r.vertex_to_file_[i] = file_vertex(cc.mesh_vertex(v), tm);
+      r.vertices_[i] = v;
+    }
+    r.face_to_file_.resize(num_faces(component));
+    r.faces_.resize(num_faces(component));
+    for(face_descriptor f : internal::faces_of(component))
+    {
+      const std::size_t i = static_cast<std::size_t>(get(fim, f));
+      r.face_to_file_[i] = file_face(cc.mesh_face(f), tm);
+      r.faces_[i] = f;
+    }
+    bucket(r.vertex_to_file_, file_points_.size(), r.vertex_begin_, r.vertex_order_);
+    bucket(r.face_to_file_, file_faces_.size(), r.face_begin_, r.face_order_);
+    r.face_elsewhere_.assign(file_faces_.size(), false);
+    for(std::size_t j = 0; j < file_faces_.size(); ++j)
+      r.face_elsewhere_[j] = r.faces(j).empty() && (!faces(j).empty() || face_elsewhere(j));
+    r.vertex_elsewhere_.assign(file_points_.size(), false);
+    for(std::size_t i = 0; i < file_points_.size(); ++i)
+      r.vertex_elsewhere_[i] = r.vertices(i).empty() && (!vertices(i).empty() || vertex_elsewhere(i));
+    return r;
+  }
+
+  /// whether file face `file_face` is in a connected component that the
+  /// mesh leaves out (`restricted_to_component()`): it has no mesh face,
+  /// and a point on it is unreachable from a source in the mesh
+  bool in_other_component(std::size_t file_face) const { return face_elsewhere(file_face); }
+
+  /// whether file vertex `file_vertex` is in a connected component that the
+  /// mesh leaves out (`restricted_to_component()`)
+  bool vertex_in_other_component(std::size_t file_vertex) const { return vertex_elsewhere(file_vertex); }
 
   /// what the triangulation and the repair changed
   const Repair_statistics& statistics() const { return statistics_; }
@@ -242,6 +305,9 @@ private:
     order = internal::validation::bucket_sort(key.size(), n_keys, [&](std::size_t i) { return key[i]; }, begin);
   }
 
+  bool face_elsewhere(std::size_t j) const { return j < face_elsewhere_.size() && face_elsewhere_[j]; }
+  bool vertex_elsewhere(std::size_t i) const { return i < vertex_elsewhere_.size() && vertex_elsewhere_[i]; }
+
   static double smallest(const std::array<double, 3>& b) { return (std::min)({b[0], b[1], b[2]}); }
 
   std::optional<Face_location> best_location(const std::vector<face_descriptor>& candidates, const Point_3& p,
@@ -320,6 +386,8 @@ private:
   std::vector<face_descriptor> faces_;
   std::vector<std::size_t> vertex_begin_, vertex_order_, face_begin_, face_order_;
   Repair_statistics statistics_;
+  // the file faces and vertices in the components a restriction left out
+  std::vector<bool> face_elsewhere_, vertex_elsewhere_;
 };
 
 } // namespace Geodesic_ridge

@@ -127,6 +127,10 @@ public:
     face_to_file_ = face_to_file;
   }
 
+  // Rule 12 skipped: a reader keeps every component, and the algorithm takes
+  // the source's (`extract_connected_component()`).
+  void allow_several_components() { several_components_allowed_ = true; }
+
   // The rules that hold for polygons of any size, before they are
   // triangulated: 1, at least three corners per face (2), 3, 4 and 5; without
   // the ones the repair fixes (2 and 4) if `repairable_too` is false.
@@ -152,7 +156,8 @@ public:
     check_no_duplicate_faces();         // 7
     check_edges();                      // 8-10
     check_manifold_vertices();          // 11
-    check_connected();                  // 12
+    if(!several_components_allowed_)
+      check_connected();                // 12
     check_no_degenerate_face();         // 13
   }
 
@@ -487,7 +492,8 @@ private:
     if(components > 1)
     {
       std::ostringstream msg;
-      msg << "mesh has " << components << " connected components; only one is supported";
+      msg << "mesh has " << components << " connected components; the algorithm takes one "
+          << "(extract_connected_component() copies the source's)";
       fail(msg);
     }
   }
@@ -512,6 +518,7 @@ private:
   const std::size_t nv_, nf_;
   const std::vector<std::size_t>* vertex_to_file_ = nullptr;
   const std::vector<std::size_t>* face_to_file_ = nullptr;
+  bool several_components_allowed_ = false;
   std::vector<std::size_t> tri_; // face f is tri_[3f], tri_[3f + 1], tri_[3f + 2]
 };
 
@@ -546,7 +553,9 @@ private:
 /// 11. every vertex is manifold: its faces form a single fan (its link, walked
 ///     face to face, is one cycle), so that two surfaces touching at a vertex
 ///     are rejected;
-/// 12. the mesh is connected (one connected component);
+/// 12. the mesh is connected (one connected component): the algorithm runs on
+///     one component, which `extract_connected_component()` copies out of a
+///     mesh of several (`IO::read_triangle_mesh()` skips this rule);
 /// 13. no face is degenerate: its corners are not collinear, decided with the
 ///     exact predicate `CGAL::collinear()` of
 ///     `CGAL::Exact_predicates_inexact_constructions_kernel`, without

@@ -33,6 +33,11 @@ struct Repair_statistics
   std::size_t non_planar_polygons = 0;
   /// the triangles made from the polygons
   std::size_t triangles_from_polygons = 0;
+  /// vertices of the file at exactly the position of an earlier vertex,
+  /// counted when the mesh is not repaired (the repair merges them:
+  /// `merged_vertices`): the mesh is read with a seam there, open or in
+  /// several parts where the file's surface may be meant closed and whole
+  std::size_t repeated_positions = 0;
   /// `true` if the mesh was repaired (`repair_mesh()`); the counts below are 0 otherwise
   bool repaired = false;
   /// vertices at exactly the position of an earlier vertex, merged into it

@@ -3,7 +3,8 @@
 //
 // Decodes a picture of geodesic_ridge --png with libpng (a real decoder, not
 // ours) and checks it: its size, and that it shows something (the red ridge,
-// the green source, the white background and many colours in all).
+// the green source, the white background and many colours in all). It prints
+// the number of grey pixels too: the parts the source cannot reach.
 //
 //   png_check FILE.png WIDTH HEIGHT [OUT.ppm]
 //
@@ -48,7 +49,7 @@ int main(int argc, char** argv)
     return 1;
   }
   std::set<unsigned long> colours;
-  std::size_t red = 0, green = 0, white = 0;
+  std::size_t red = 0, green = 0, white = 0, grey = 0;
   for(std::size_t i = 0; i < rgb.size(); i += 3)
   {
     const unsigned char r = rgb[i], g = rgb[i + 1], b = rgb[i + 2];
@@ -56,9 +57,10 @@ int main(int argc, char** argv)
     red += r == 220 && g == 30 && b == 30;   // Png_curves' default: the ridge
     green += r == 20 && g == 170 && b == 40; // the source's cross
     white += r == 255 && g == 255 && b == 255;
+    grey += r == g && b == (g < 243 ? g + 12 : 255) && g < 255; // the unreachable parts' shaded grey
   }
   std::cout << argv[1] << ": " << w << " x " << h << ", " << colours.size() << " colours, " << red << " ridge, "
-            << green << " source and " << white << " background pixels\n";
+            << green << " source, " << white << " background and " << grey << " grey pixels\n";
   if(red < 100 || green == 0 || white == 0 || colours.size() < 50)
   {
     std::cerr << argv[1] << ": the picture lacks the ridge, the source, the background or colours\n";

@@ -213,6 +213,13 @@ void render(const std::string& filename, const TriangleMesh& tm, VertexPointMap 
   renderer.write(filename);
 }
 
+// The plain surface's colour, Lambert-shaded.
+inline std::array<unsigned char, 3> grey(double shade)
+{
+  const unsigned char g = static_cast<unsigned char>(255 * std::min(1.0, shade));
+  return std::array<unsigned char, 3>{{g, g, static_cast<unsigned char>(std::min(255, g + 12))}};
+}
+
 } // namespace internal_png
 
 /// \ingroup PkgGeodesicRidgeIO
@@ -226,10 +233,7 @@ void write_png(const std::string& filename, const TriangleMesh& tm, VertexPointM
                std::array<double, 3> view = {{0.3, -0.4, -1.0}})
 {
   auto grey = [](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, double, double, double,
-                 double shade) {
-    const unsigned char g = static_cast<unsigned char>(255 * std::min(1.0, shade));
-    return std::array<unsigned char, 3>{{g, g, static_cast<unsigned char>(std::min(255, g + 12))}};
-  };
+                 double shade) { return internal_png::grey(shade); };
   internal_png::render(filename, tm, vpm, curves, size, view, grey);
 }
 
@@ -259,7 +263,9 @@ inline std::array<double, 3> viridis(double t)
 /// Same as above, with the surface coloured by the field that interpolates
 /// `values` (a vertex property map of doubles) linearly on each face: viridis
 /// from 0 to `largest`, darkened in thin bands at `bands` equally spaced
-/// levels, so that iso-lines show.
+/// levels, so that iso-lines show. A face with a vertex whose value is not
+/// finite (a part of the mesh the source cannot reach: infinite distance) is
+/// drawn grey, as by the function above.
 template <class TriangleMesh, class VertexPointMap, class VertexValueMap, class Point_3>
 void write_png(const std::string& filename, const TriangleMesh& tm, VertexPointMap vpm, VertexValueMap values,
                double largest, int bands, const std::vector<Png_curves<Point_3> >& curves, int size = 600,
@@ -269,6 +275,8 @@ void write_png(const std::string& filename, const TriangleMesh& tm, VertexPointM
                       double w2, double shade) {
     const double d = w0 * get(values, source(h, tm)) + w1 * get(values, target(h, tm)) +
                      w2 * get(values, target(next(h, tm), tm));
+    if(!std::isfinite(d))
+      return internal_png::grey(shade);
     const double t = largest > 0 ? d / largest : 0;
     const double phase = t * bands - std::floor(t * bands);
     const double band = (bands > 0 && (phase < 0.06 || phase > 0.94)) ? 0.45 : 1.0;

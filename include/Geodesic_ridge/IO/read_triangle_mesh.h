@@ -411,16 +411,15 @@ std::size_t count_repeated_positions(const std::vector<Point>& points)
   return n;
 }
 
-// Validates the soup, its messages in the file's indices. A mesh refused for a
-// rule the repair does not fix as such (a boundary, several components) may
-// still be one the repair fixes when vertices coincide (a seam in the file):
-// without the repair, that is said, as a `Repairable_mesh_error`. After the
-// repair, what is left is no longer repairable.
-template <class Point, class FilePoint>
-void validate(const Repaired_soup<Point>& soup, const std::vector<FilePoint>& file_points, bool repaired)
+// Validates the soup, its messages in the file's indices, keeping every
+// connected component (the algorithm takes the source's). After the repair,
+// what is left is no longer repairable.
+template <class Point>
+void validate(const Repaired_soup<Point>& soup, bool repaired)
 {
   validation::Triangle_soup_validator<Point, std::array<std::size_t, 3>> validator(soup.points, soup.triangles);
   validator.set_file_indices(&soup.vertex_to_file, &soup.face_to_file);
+  validator.allow_several_components();
   try
   {
     validator.run();
@@ -430,15 +429,6 @@ void validate(const Repaired_soup<Point>& soup, const std::vector<FilePoint>& fi
     if(repaired)
       throw Invalid_mesh_error(std::string(e.what()) + " (left by the repair)");
     throw;
-  }
-  catch(const Invalid_mesh_error& e)
-  {
-    const std::size_t n = repaired ? 0 : count_repeated_positions(file_points);
-    if(n == 0)
-      throw;
-    throw Repairable_mesh_error(std::string(e.what()) + " (" + std::to_string(n) +
-                                (n == 1 ? " vertex is" : " vertices are") +
-                                " at the position of an earlier vertex: the repair merges them)");
   }
 }
 
@@ -484,7 +474,7 @@ namespace IO {
 
 /// \ingroup PkgGeodesicRidgeIO
 ///
-/// \brief reads a closed triangle mesh from an OFF, OBJ or PLY file,
+/// \brief reads a triangle mesh (closed or with a border, in one or several parts) from an OFF, OBJ or PLY file,
 /// triangulates its polygons, repairs it if asked to, checks it with
 /// `validate_triangle_soup()`, and builds `tm` from it; returns the map from
 /// `tm` back to the file's indices.
@@ -497,6 +487,14 @@ namespace IO {
 /// instead, which triangulates too. Then the mesh is validated, and only then
 /// is `tm` cleared and built: every failure is an exception, never a partial
 /// mesh.
+///
+/// Every rule of `validate_triangle_soup()` is checked but rule 12: a mesh of
+/// several connected components is read whole, and
+/// `extract_connected_component()` copies the one the algorithm is to run on
+/// (the source's). Without the repair, the vertices at the position of an
+/// earlier vertex are counted (`Repair_statistics::repeated_positions`): the
+/// surface is read open or in several parts there, which the repair would
+/// merge.
 ///
 /// Indices. Without polygons and without repair, vertex `i` and face `j` of
 /// the file are the `i`-th vertex and the `j`-th face added to `tm` (for a
@@ -577,11 +575,13 @@ File_index_map<TriangleMesh> read_triangle_mesh(const std::string& filename, Tri
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
   mio::read_polygon_soup_or_throw(filename, points, polygons);
-  const Repaired_soup<Point> soup = mio::with_file_name(filename, [&] {
+  Repaired_soup<Point> soup = mio::with_file_name(filename, [&] {
     return repair ? repair_mesh(points, polygons) : triangulate_polygons(points, polygons);
   });
+  if(!repair)
+    soup.statistics.repeated_positions = mio::count_repeated_positions(points);
   visitor.after_repair(soup.statistics);
-  mio::with_file_name(filename, [&] { mio::validate(soup, points, repair); });
+  mio::with_file_name(filename, [&] { mio::validate(soup, repair); });
   auto descriptors = mio::build_mesh(filename, soup, tm);
   return File_index_map<TriangleMesh>(points, std::move(polygons), soup, std::move(descriptors.first),
                                       std::move(descriptors.second));
