@@ -8,11 +8,16 @@
 //   bench_ridge_accuracy [--max-faces N] [--tolerance T] [--recall-tolerance T]
 //                        [--sources-per-mesh N] [--random-sources R] [--seed S]
 //                        [--solver exact|fmm|cone|both|exact+cone] [--diagnose] [--no-reference] [--source-vertex V]...
-//                        [--spacing S] [--min-jump DEG] [--outliers] [--hole R] [pipeline options] [MESH ...]
+//                        [--spacing S] [--min-jump DEG] [--outliers] [--hole R] [--repair]
+//                        [pipeline options] [MESH ...]
 //
 // --hole R: surfaces with a border. Each mesh loses the faces with a corner
 // within R times its bounding box diagonal of its last vertex (one more border
 // loop; the name gets "_hole") before the sources are drawn.
+//
+// --repair: meshes as people have them (OFF, OBJ, PLY: polygons, non-manifold,
+// in parts): each is read with the repair (`parameters::repair(true)`) and, if
+// it is in several parts, measured on its largest (the name gets "_part").
 //
 // Solver 'cone': the exact solver with the cone field, measuring the cone
 // ridge (`Ridge_curve::cone_polylines`); 'exact+cone' runs both.
@@ -55,8 +60,11 @@
 
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/connected_component.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -128,6 +136,23 @@ double quantile(std::vector<double> v, double q) { return GT::internal::quantile
 
 // Removes the faces with a corner within `radius` (times the bounding box
 // diagonal) of the last vertex: a hole, one more border loop.
+// Keeps the largest connected component of `mesh` only; false if it had one.
+bool keep_largest_part(Mesh& mesh)
+{
+  std::vector<std::size_t> id(mesh.number_of_faces());
+  const std::size_t n = CGAL::Polygon_mesh_processing::connected_components(
+      mesh, boost::make_iterator_property_map(id.begin(), get(CGAL::face_index, mesh)));
+  if(n < 2) return false;
+  std::vector<std::size_t> size(n, 0);
+  for(std::size_t i : id) ++size[i];
+  const std::size_t largest = std::size_t(std::max_element(size.begin(), size.end()) - size.begin());
+  const std::size_t f = std::size_t(std::find(id.begin(), id.end(), largest) - id.begin());
+  Mesh part;
+  Geodesic_ridge::extract_connected_component(mesh, face_descriptor(Mesh::size_type(f)), part);
+  mesh = std::move(part);
+  return true;
+}
+
 void cut_hole(Mesh& mesh, double radius)
 {
   const CGAL::Bbox_3 box = CGAL::bbox_3(mesh.points().begin(), mesh.points().end());
@@ -153,6 +178,7 @@ int main(int argc, char** argv)
   int fmm_skip_rings = 3;
   bool outliers = false, diagnose = false, reference = true;
   double hole = 0;
+  bool repair = false;
   std::vector<std::string> solvers = {"exact", "fmm"};
   GT::Reference_ridge_options ref_opt;
   std::vector<std::string> files;
@@ -185,6 +211,7 @@ int main(int argc, char** argv)
     else if(a == "--fmm-skip-rings" && i + 1 < argc) fmm_skip_rings = std::stoi(argv[++i]);
     else if(a == "--no-reference") reference = false;
     else if(a == "--hole" && i + 1 < argc) hole = std::stod(argv[++i]);
+    else if(a == "--repair") repair = true;
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
     else files.push_back(a);
   }
@@ -210,14 +237,17 @@ int main(int argc, char** argv)
   for(const std::string& file : files)
   {
     Mesh mesh;
-    try { Geodesic_ridge::IO::read_triangle_mesh(file, mesh); }
+    try { Geodesic_ridge::IO::read_triangle_mesh(file, mesh, Geodesic_ridge::parameters::repair(repair)); }
     catch(const Geodesic_ridge::Error& e) { std::cerr << file << ": " << e.what() << "\n"; continue; }
+    const bool part = keep_largest_part(mesh);
     if(mesh.number_of_faces() > max_faces) continue;
     if(hole > 0) cut_hole(mesh, hole);
-    const long loops = hole > 0 ? 1 : 0; // (the meshes measured are closed before the hole)
+    std::vector<Mesh::Halfedge_index> border_cycles;
+    CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(border_cycles));
+    const long loops = long(border_cycles.size());
     const long chi = long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) + long(mesh.number_of_faces());
     const long genus = (2 - chi - loops) / 2;
-    const std::string mesh_name = fs::path(file).stem().string() + (hole > 0 ? "_hole" : "");
+    const std::string mesh_name = fs::path(file).stem().string() + (part ? "_part" : "") + (hole > 0 ? "_hole" : "");
 
     std::vector<Source> sources = sources_of(mesh, per_mesh, random_sources, seed);
     if(!fixed_sources.empty())

@@ -20,6 +20,7 @@
 #include <Geodesic_ridge/solvers/Fast_marching_solver.h>
 
 #include <CGAL/Surface_mesh_shortest_path.h>
+#include "smsp_source_coordinates.h"
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
@@ -47,7 +48,10 @@ std::vector<double> distances_on_mesh(const TriangleMesh& tm, const Source& sour
     if constexpr(std::is_same<Source, typename boost::graph_traits<TriangleMesh>::vertex_descriptor>::value)
       sp.add_source_point(source);
     else
-      sp.add_source_point(source.first, {{source.second[0], source.second[1], source.second[2]}});
+    {
+      const auto w = internal::smsp_source_coordinates(source.second);
+      sp.add_source_point(source.first, {{w[0], w[1], w[2]}});
+    }
     sp.build_sequence_tree();
     for(auto v : vertices(tm)) d[std::size_t(get(CGAL::vertex_index, tm, v))] = sp.shortest_distance_to_source_points(v).first;
   }

@@ -55,6 +55,8 @@
 
 #include <Geodesic_ridge/ridge_curve.h>
 
+#include "smsp_source_coordinates.h"
+
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
@@ -466,34 +468,6 @@ auto reference_ridge(const TriangleMesh& tm, typename boost::graph_traits<Triang
   const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return internal::reference_ridge_impl(tm, sp, internal::to_v3(get(CGAL::vertex_point, tm, s)), opt, setup);
 }
-
-namespace internal {
-
-// The coordinates to give SMSP for a source point. CGAL before 5.6 expands a
-// source on an edge (one coordinate 0) wrongly (CGAL issue #6681, fixed by pull
-// request #6739): on an inner edge no cone starts towards the edge's ends
-// (measured on the flat square: distances up to 0.31 too long, 1.25 edges); on
-// a BORDER edge the source is put at the mirror image of its position along the
-// edge (`expand_edge_root()` passes the edge source's coordinate where
-// `face_location()` takes the target's; measured: off by |1 - 2t| of the edge).
-// The point is moved into its face by 2^-40 of the barycentric range instead,
-// as the package's Exact_solver does: distances change by about 1e-13 of an edge.
-template <class FT>
-std::array<FT, 3> smsp_source_coordinates(std::array<FT, 3> w)
-{
-#if CGAL_VERSION_NR < CGAL_VERSION_NUMBER(5, 6, 0)
-  int zeros = 0;
-  for(const FT& x : w) zeros += (x == FT(0));
-  if(zeros == 1)
-  {
-    const FT nudge = FT(1) / FT(1099511627776.0);
-    for(FT& x : w) x = (x == FT(0)) ? nudge : x * (FT(1) - nudge);
-  }
-#endif
-  return w;
-}
-
-} // namespace internal
 
 /// The exact reference ridge of a source at a surface point (face, barycentric
 /// coordinates in CGAL's order). A point of an edge, border or not, is moved
