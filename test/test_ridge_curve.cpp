@@ -905,7 +905,7 @@ TEST_CASE("surfaces with a border: analytic cases", "[ridge_curve][border]")
       const Result rc = compute(box.mesh, s, exact);
       check_topology(box, rc);
       // precision as the accuracy benchmark measures it, p95 of the samples.
-      // Before stubs at corner forks were removed from K (stage 1), the ridge
+      // Before prongs at corner forks were removed from K (stage 1), the ridge
       // forked one edge above each bottom corner into two short branches that
       // ended on the bottom edges: p95 0.67, max 0.88 mean edges (n = 12).
       double recall = 0;

@@ -77,7 +77,7 @@ struct Rough_cut_locus_statistics
   std::size_t number_of_closing_rungs = 0;    ///< rungs added back to close the 2g cycles
   std::size_t number_of_teeth_pruned = 0;     ///< one-edge leaves of K removed
   std::size_t number_of_curvature_pruned_dual_edges = 0; ///< kept dual edges of false branches (see `branch_curvature`)
-  std::size_t number_of_corner_moves = 0;     ///< leaves of K moved back onto a corner (large curvature), corners where K forks rid of their one-edge stubs, and corners joined to K
+  std::size_t number_of_corner_moves = 0;     ///< leaves of K moved back onto a corner (large curvature), corners where K forks rid of their one-edge prongs, and corners joined to K
   bool fallback_single_rung = false;          ///< no dual edge reached the tolerance: K is the best rung
 };
 
@@ -183,7 +183,7 @@ public:
       if(!st_.fallback_single_rung && options_.leaf_curvature > 0)
       {
         move_leaves_onto_corners();
-        remove_stubs_at_corner_forks();
+        remove_prongs_at_corner_forks();
         join_corners();
       }
       collect_cut_edges();
@@ -821,34 +821,34 @@ private:
     }
   }
 
-  // Stubs at a corner where K forks. The dual edges kept around a corner for
+  // Prongs at a corner where K forks. The dual edges kept around a corner for
   // its curvature cross several of its spokes, and the rungs make K fork at
-  // the corner into one-edge stubs that end at flat vertices beside it (the
-  // open box's bottom corners: two stubs along the bottom edges). A front that
-  // crosses such a stub's edge is split between two sheets, and the faces at
+  // the corner into one-edge prongs that end at flat vertices beside it (the
+  // open box's bottom corners: two prongs along the bottom edges). A front that
+  // crosses such a prong's edge is split between two sheets, and the faces at
   // the corner get no copy that carries it at all three corners: the ridge
   // forks beside the corner. The cut locus ends at vertices of positive
   // curvature, never at a flat vertex one edge from a corner, so at a corner
-  // (60 degrees or more) where K has three or more edges, every such stub is
+  // (60 degrees or more) where K has three or more edges, every such prong is
   // removed while one other edge stays. A corner where K does not fork (a
   // branch through it and one edge on, as at bunny_1k's ear tips) is left to
   // `move_leaves_onto_corners()`.
-  void remove_stubs_at_corner_forks()
+  void remove_prongs_at_corner_forks()
   {
     for(vertex_descriptor u : vertices(tm_))
     {
       if(cut_degree_[vi(u)] < 3 || curvature(u) < corner_curvature() || is_source_vertex(u)) continue;
-      std::vector<edge_descriptor> stubs;
+      std::vector<edge_descriptor> prongs;
       for(halfedge_descriptor h : CGAL::halfedges_around_target(u, tm_))
       {
         const vertex_descriptor w = source(h, tm_);
         if(r_.is_cut_edge[ei(edge(h, tm_))] && is_leaf_of_cut(w) && curvature(w) < corner_curvature() &&
            !is_source_vertex(w))
-          stubs.push_back(edge(h, tm_));
+          prongs.push_back(edge(h, tm_));
       }
-      if(stubs.empty()) continue;
-      if(stubs.size() == cut_degree_[vi(u)]) stubs.pop_back(); // (K keeps an edge at u)
-      for(edge_descriptor e : stubs) remove_cut(e);
+      if(prongs.empty()) continue;
+      if(prongs.size() == cut_degree_[vi(u)]) prongs.pop_back(); // (K keeps an edge at u)
+      for(edge_descriptor e : prongs) remove_cut(e);
       ++st_.number_of_corner_moves;
     }
   }
