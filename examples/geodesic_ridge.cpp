@@ -82,9 +82,9 @@ const char* synopsis =
     "                      [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]\n"
     "                      [--query IN.txt [--query-barycentric] --query-out OUT.txt]\n"
     "                      [--field linear|cone] [--stats OUT.json] [--png OUT.png]\n"
-    "  MESH: a closed, connected, manifold mesh (.off, .obj, .ply; PLY triangle strips too). Polygons are\n"
-    "  triangulated (CGAL's triangulate_face rule; a note on stderr says how many, and how many were not\n"
-    "  planar); dirty meshes are refused, naming what --repair would fix.\n"
+    "  MESH: a manifold surface, closed or with borders (.off, .obj, .ply; PLY triangle strips too).\n"
+    "  Polygons are triangulated (CGAL's triangulate_face rule; a note on stderr says how many, and how\n"
+    "  many were not planar); dirty meshes are refused, naming what --repair would fix.\n"
     "  Indices are the file's, in and out: V, FACE, the FACE of query lines and of --ridge-locations, the\n"
     "  stats' source, the refined mesh's 'source_face'. A point on a polygon is located among its triangles;\n"
     "  barycentric coordinates (--query-barycentric, --ridge-locations) have one value per vertex of the\n"
@@ -472,7 +472,8 @@ GEODESIC_RIDGE_JSON_FIELDS(Extended_surface_statistics, rings, number_of_faces, 
                            number_of_leaf_vertices)
 GEODESIC_RIDGE_JSON_FIELDS(Ridge_curve_statistics, ridge_segments, junctions, free_ends, components, cycles,
                            total_length, faces_with_several_copies, surviving_copies, split_copies, envelope_segments,
-                           edge_segments, regions_before_merge, merged_segments, rejoined_segments, dropped_components,
+                           edge_segments, regions_before_merge, merged_segments, rejoined_segments, border_joining_segments,
+                           dropped_components,
                            pruned_spur_segments, pruned_flat_end_segments)
 GEODESIC_RIDGE_JSON_FIELDS(Cone_ridge_statistics, tolerance, points_moved, junctions_moved, points_kept, points_added,
                            largest_move)

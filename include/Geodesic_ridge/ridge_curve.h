@@ -27,8 +27,11 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <functional>
+#include <limits>
 #include <map>
 #include <memory>
+#include <queue>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -94,6 +97,8 @@ struct Ridge_curve_statistics
   std::size_t regions_before_merge = 0;   ///< components of M minus the raw ridge
   std::size_t merged_segments = 0;        ///< segments removed to merge regions
   std::size_t rejoined_segments = 0;      ///< merged segments put back to join two pieces of the ridge
+  /// cell boundaries made ridge to join the pieces that hang from different border loops
+  std::size_t border_joining_segments = 0;
   std::size_t dropped_components = 0;     ///< detached pieces dropped
   std::size_t pruned_spur_segments = 0;   ///< free-end segments with a gradient jump below the minimum angle
   std::size_t pruned_flat_end_segments = 0; ///< free-end segments with no positive curvature near their end
@@ -406,6 +411,7 @@ public:
     merge_into_one_region();
     rejoin_pieces();
     if(minimum_angle_ > 0) prune_spurs();
+    join_border_components();
     keep_main_component(polylines);
   }
 
@@ -567,17 +573,25 @@ private:
       {
         const std::size_t ca = cell_of(f, s.copy_a), cb = cell_of(f, s.copy_b);
         if(same_field(cells_[ca].field, cells_[cb].field)) { fronts_.unite(ca, cb); continue; }
-        typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
-        const auto ga = field_gradient(cp, cells_[ca].field), gb = field_gradient(cp, cells_[cb].field);
-        const Vector va(ga[0], ga[1], ga[2]), vb(gb[0], gb[1], gb[2]);
-        const double strength = std::sqrt(CGAL::to_double((va - vb).squared_length()));
-        const double angle = (va == CGAL::NULL_VECTOR || vb == CGAL::NULL_VECTOR)
-                                 ? 0.0 : CGAL::to_double(CGAL::approximate_angle(va, vb));
+        const Gradient_jump j = gradient_jump_in_face(cp, cells_[ca].field, cells_[cb].field);
         segments_.push_back(
-            Segment{node_at(f, s.endpoints[0]), node_at(f, s.endpoints[1]), ca, cb, strength, angle, true});
+            Segment{node_at(f, s.endpoints[0]), node_at(f, s.endpoints[1]), ca, cb, j.strength, j.angle, true});
         ++st_.envelope_segments;
       }
     }
+  }
+
+  // the jump between two linear fields of one face (corner points cp)
+  static Gradient_jump gradient_jump_in_face(const std::array<Point, 3>& cp, const std::array<double, 3>& a,
+                                             const std::array<double, 3>& b)
+  {
+    typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
+    const auto ga = field_gradient(cp, a), gb = field_gradient(cp, b);
+    const Vector va(ga[0], ga[1], ga[2]), vb(gb[0], gb[1], gb[2]);
+    const double strength = std::sqrt(CGAL::to_double((va - vb).squared_length()));
+    const double angle =
+        (va == CGAL::NULL_VECTOR || vb == CGAL::NULL_VECTOR) ? 0.0 : CGAL::to_double(CGAL::approximate_angle(va, vb));
+    return Gradient_jump{strength, angle};
   }
 
   // the jump of the gradient across edge k1 of face f1 (edge k2 of f2) between
@@ -672,9 +686,12 @@ private:
     return none;
   }
 
-  // The pieces of edge k1 of f1 (k2 of f2) between the cell boundaries of both
-  // sides; a ridge segment where the cells on the two sides are different fronts.
-  void segments_on_edge(std::size_t f1, int k1, std::size_t f2, int k2)
+  // A piece [ta, tb] of edge k1 of f1 (t from corner k1 to k1 + 1) between the
+  // cell boundaries of both sides, with the cells on either side.
+  struct Edge_piece { Q ta, tb; std::size_t c1, c2; Gradient_jump jump; };
+
+  // The pieces of edge k1 of f1 (k2 of f2).
+  std::vector<Edge_piece> edge_pieces(std::size_t f1, int k1, std::size_t f2, int k2) const
   {
     const std::vector<Interval> side1 = edge_intervals(f1, k1, false), side2 = edge_intervals(f2, k2, true);
     std::vector<Q> cuts;
@@ -682,24 +699,41 @@ private:
       for(const auto& i : *side) { cuts.push_back(i.lo); cuts.push_back(i.hi); }
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    std::vector<Edge_piece> out;
     for(std::size_t i = 0; i + 1 < cuts.size(); ++i)
     {
       const Q mid = (cuts[i] + cuts[i + 1]) / 2;
       const std::size_t c1 = cell_at(side1, mid), c2 = cell_at(side2, mid);
-      if(c1 == none || c2 == none) continue;
-      const Gradient_jump jump = edge_jump(f1, k1, c1, f2, k2, c2);
+      if(c1 != none && c2 != none)
+        out.push_back(Edge_piece{cuts[i], cuts[i + 1], c1, c2, edge_jump(f1, k1, c1, f2, k2, c2)});
+    }
+    return out;
+  }
+
+  // the nodes at the ends of piece p of edge k1 of f1
+  std::pair<std::size_t, std::size_t> piece_nodes(std::size_t f1, int k1, const Edge_piece& p)
+  {
+    std::array<Q, 3> la = {{Q(0), Q(0), Q(0)}}, lb = la;
+    la[k1] = Q(1) - p.ta; la[(k1 + 1) % 3] = p.ta;
+    lb[k1] = Q(1) - p.tb; lb[(k1 + 1) % 3] = p.tb;
+    return {node_at(f1, la), node_at(f1, lb)};
+  }
+
+  // A ridge segment on each piece where the cells on the two sides are different fronts.
+  void segments_on_edge(std::size_t f1, int k1, std::size_t f2, int k2)
+  {
+    for(const Edge_piece& p : edge_pieces(f1, k1, f2, k2))
+    {
       // a front of a split copy is one front with a glued copy only where their fields agree
-      const bool glued = glued_across(c1, k1, c2) && !kinked(jump) && !cells_[c1].split && !cells_[c2].split;
-      if(glued || one_front_along(c1, k1, c2, k2, cuts[i], cuts[i + 1], jump))
+      const bool glued =
+          glued_across(p.c1, k1, p.c2) && !kinked(p.jump) && !cells_[p.c1].split && !cells_[p.c2].split;
+      if(glued || one_front_along(p.c1, k1, p.c2, k2, p.ta, p.tb, p.jump))
       {
-        fronts_.unite(c1, c2);
+        fronts_.unite(p.c1, p.c2);
         continue;
       }
-      // the two edge points, from f1's side
-      std::array<Q, 3> la = {{Q(0), Q(0), Q(0)}}, lb = la;
-      la[k1] = Q(1) - cuts[i]; la[(k1 + 1) % 3] = cuts[i];
-      lb[k1] = Q(1) - cuts[i + 1]; lb[(k1 + 1) % 3] = cuts[i + 1];
-      segments_.push_back(Segment{node_at(f1, la), node_at(f1, lb), c1, c2, jump.strength, jump.angle, true});
+      const auto [a, b] = piece_nodes(f1, k1, p);
+      segments_.push_back(Segment{a, b, p.c1, p.c2, p.jump.strength, p.jump.angle, true});
       ++st_.edge_segments;
     }
   }
@@ -763,6 +797,116 @@ private:
       pieces.unite(ra, rb);
       ++st_.rejoined_segments;
     }
+  }
+
+  // With a border, the ridge with the border is one connected graph (so is
+  // K ∪ ∂M). Where two fronts meet at a small angle, or where a split copy's
+  // front continues a glued one, the assembly may have united them as one front
+  // and drawn no segment: the ridge then hangs from the loops in pieces and
+  // M minus the pieces is no disk. Each other piece is joined to the main one
+  // by the path along the boundaries between cells (envelope edges inside
+  // faces, pieces of mesh edges) that is shortest in length over the gradient
+  // jump (the fronts meet where the jump is large). Joining two pieces closes
+  // no cycle, so the cycle rank is kept.
+  void join_border_components()
+  {
+    if(number_of_loops_ < 2) return;
+    auto unite_pieces = [&](Union_find& uf) {
+      join_border_nodes(uf);
+      for(const Segment& sg : segments_) if(sg.ridge && sg.a != sg.b) uf.unite(sg.a, sg.b);
+    };
+    {
+      Union_find uf(nodes_.size() + number_of_loops_);
+      unite_pieces(uf);
+      std::set<std::size_t> roots;
+      for(std::size_t loop = 0; loop < number_of_loops_; ++loop) roots.insert(uf.find(loop_node(loop)));
+      if(roots.size() < 2) return;
+    }
+    const std::vector<Segment> links = cell_boundary_links();
+    // node ids as in unite_pieces: nodes_, then the loops (nodes_ is complete now)
+    const std::size_t n = nodes_.size() + number_of_loops_;
+    std::vector<std::vector<std::size_t> > at(n);
+    for(std::size_t i = 0; i < links.size(); ++i) { at[links[i].a].push_back(i); at[links[i].b].push_back(i); }
+    auto weight = [&](const Segment& sg) { return length(sg) / std::max(sg.angle, 1.0); };
+    for(;;)
+    {
+      Union_find uf(n);
+      unite_pieces(uf);
+      const std::size_t main = uf.find(loop_node(0));
+      std::set<std::size_t> other_loops;
+      for(std::size_t loop = 1; loop < number_of_loops_; ++loop)
+        if(uf.find(loop_node(loop)) != main) other_loops.insert(uf.find(loop_node(loop)));
+      if(other_loops.empty()) return;
+      // Dijkstra from the main piece to the nearest node of a piece with a loop
+      std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+      std::vector<std::size_t> via(n, none);
+      typedef std::pair<double, std::size_t> Item;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
+      for(std::size_t v = 0; v < n; ++v) if(uf.find(v) == main) { dist[v] = 0; queue.emplace(0.0, v); }
+      std::size_t reached = none;
+      while(!queue.empty())
+      {
+        const auto [d, v] = queue.top();
+        queue.pop();
+        if(d > dist[v]) continue;
+        if(other_loops.count(uf.find(v))) { reached = v; break; }
+        for(std::size_t i : at[v])
+        {
+          const std::size_t w = links[i].a == v ? links[i].b : links[i].a;
+          if(d + weight(links[i]) < dist[w]) { dist[w] = d + weight(links[i]); via[w] = i; queue.emplace(dist[w], w); }
+        }
+      }
+      if(reached == none) return; // (the check of the topology reports it)
+      for(std::size_t v = reached; uf.find(v) != main;)
+      {
+        Segment sg = links[via[v]];
+        sg.ridge = true;
+        segments_.push_back(sg);
+        ++st_.border_joining_segments;
+        v = sg.a == v ? sg.b : sg.a;
+      }
+    }
+  }
+
+  // Every boundary between two cells as a segment: the envelope's edges inside
+  // faces, and the pieces of the mesh's inner edges between the cell boundaries
+  // of both sides (whole edges where one copy covers each side).
+  std::vector<Segment> cell_boundary_links()
+  {
+    std::vector<Segment> links;
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      const auto cp = faces_.corner_points(f);
+      for(const auto& s : envelope_of_[f]->segments)
+      {
+        const std::size_t ca = cell_of(f, s.copy_a), cb = cell_of(f, s.copy_b);
+        const Gradient_jump j = gradient_jump_in_face(cp, cells_[ca].field, cells_[cb].field);
+        links.push_back(
+            Segment{node_at(f, s.endpoints[0]), node_at(f, s.endpoints[1]), ca, cb, j.strength, j.angle, false});
+      }
+    }
+    std::vector<char> edge_done(num_edges(tm_), 0);
+    for(std::size_t f1 = 0; f1 < nf_; ++f1)
+    {
+      const auto h1s = faces_.corner_halfedges(f1);
+      for(int k1 = 0; k1 < 3; ++k1)
+      {
+        const std::size_t e = get(maps_.eim, edge(h1s[k1], tm_));
+        const halfedge_descriptor h2 = opposite(h1s[k1], tm_);
+        if(edge_done[e] || is_border(h2, tm_)) continue;
+        edge_done[e] = 1;
+        const std::size_t f2 = get(maps_.fim, face(h2, tm_));
+        const auto h2s = faces_.corner_halfedges(f2);
+        int k2 = 0;
+        while(h2s[k2] != h2) ++k2;
+        for(const Edge_piece& p : edge_pieces(f1, k1, f2, k2))
+        {
+          const auto [a, b] = piece_nodes(f1, k1, p);
+          links.push_back(Segment{a, b, p.c1, p.c2, p.jump.strength, p.jump.angle, false});
+        }
+      }
+    }
+    return links;
   }
 
   // Prune spurs. A free end of the cut locus of a polyhedral surface is a
