@@ -16,8 +16,10 @@ Planned models: heat method (`CGAL::Heat_method_3`), Dijkstra on the edge graph
 (an upper bound, for tests).
 
 The named parameter `Geodesic_ridge::parameters::solver()` passes a model to the
-pipeline (user manual: \ref GeodesicRidgeSecSolvers). This file documents the
-concept; it is no header to include.
+pipeline (user manual: \ref GeodesicRidgeSecSolvers). A model of your own is
+taken as approximate (as fast marching); \ref custom_solver_example.cpp is one in
+a few lines. Models are copied: keep state that must outlive a call behind a
+pointer. This file documents the concept; it is no header to include.
 */
 class GeodesicSolver
 {
