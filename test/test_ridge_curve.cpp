@@ -714,7 +714,8 @@ TEST_CASE("a copy is split at a kink between its corners' fronts", "[ridge_curve
 // Surfaces with a border (user manual, "Surfaces with a Border").
 
 // `name` with the faces within `radius` (times the bounding box diagonal) of
-// vertex `centre` removed: one more border loop.
+// the vertices `centres` removed: one more border loop per centre (where the
+// holes stay apart).
 Mesh with_holes(const std::string& name, const std::vector<std::size_t>& centres, double radius)
 {
   Mesh m = load(name);
