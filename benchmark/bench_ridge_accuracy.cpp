@@ -7,7 +7,7 @@
 //
 //   bench_ridge_accuracy [--max-faces N] [--tolerance T] [--recall-tolerance T]
 //                        [--sources-per-mesh N] [--random-sources R] [--seed S]
-//                        [--solver exact|fmm|cone|both|exact+cone] [--diagnose] [--no-reference] [--source-vertex V]...
+//                        [--solver exact|fmm|cone|heat|heat-idt|dijkstra|both|exact+cone|approximate] [--diagnose] [--no-reference] [--source-vertex V]...
 //                        [--spacing S] [--min-jump DEG] [--outliers] [--hole R] [--repair]
 //                        [pipeline options] [MESH ...]
 //
@@ -18,6 +18,10 @@
 // --repair: meshes as people have them (OFF, OBJ, PLY: polygons, non-manifold,
 // in parts): each is read with the repair (`parameters::repair(true)`) and, if
 // it is in several parts, measured on its largest (the name gets "_part").
+//
+// Solvers heat, heat-idt and dijkstra are the baselines (issue 14); the heat
+// method runs from the vertex sources only ('approximate' runs fmm and the
+// three).
 //
 // Solver 'cone': the exact solver with the cone field, measuring the cone
 // ridge (`Ridge_curve::cone_polylines`); 'exact+cone' runs both.
@@ -61,6 +65,8 @@
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 #include <Geodesic_ridge/connected_component.h>
+#include <Geodesic_ridge/solvers/Dijkstra_solver.h>
+#include <Geodesic_ridge/solvers/Heat_method_solver.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -200,7 +206,9 @@ int main(int argc, char** argv)
       const std::string s = argv[++i];
       if(s == "both") solvers = {"exact", "fmm"};
       else if(s == "exact+cone") solvers = {"exact", "cone"};
-      else if(s == "exact" || s == "fmm" || s == "cone") solvers = {s};
+      else if(s == "approximate") solvers = {"fmm", "heat", "heat-idt", "dijkstra"};
+      else if(s == "exact" || s == "fmm" || s == "cone" || s == "heat" || s == "heat-idt" || s == "dijkstra")
+        solvers = {s};
       else { std::cerr << "unknown solver " << s << "\n"; return 2; }
     }
     else if(a == "--spacing" && i + 1 < argc) ref_opt.spacing = std::stod(argv[++i]);
@@ -277,6 +285,8 @@ int main(int argc, char** argv)
       if(diagnose) exact_on_mesh = on_mesh_of(true);
       for(const std::string& solver : solvers)
       {
+        // CGAL 5.5's heat method takes vertex sources only (the solver refuses points)
+        if(!src.on_vertex && solver.compare(0, 4, "heat") == 0) continue;
         Pair_result r;
         r.mesh = mesh_name;
         r.source = src.name();
@@ -293,6 +303,10 @@ int main(int argc, char** argv)
                                    : Geodesic_ridge::compute_ridge_curve(mesh, src.location, np);
             };
             if(solver == "fmm") return compute(p::solver(Geodesic_ridge::Fast_marching_solver(), options.parameters(t)));
+            if(solver == "heat") return compute(p::solver(Geodesic_ridge::Heat_method_solver<>(), options.parameters(t)));
+            if(solver == "heat-idt")
+              return compute(p::solver(Geodesic_ridge::Heat_method_idt_solver(), options.parameters(t)));
+            if(solver == "dijkstra") return compute(p::solver(Geodesic_ridge::Dijkstra_solver(), options.parameters(t)));
             if(solver == "cone")
               return compute(p::field(Geodesic_ridge::Field::cone,
                                       p::solver(Geodesic_ridge::Exact_solver(), options.parameters(t))));
@@ -336,7 +350,7 @@ int main(int argc, char** argv)
           if(diagnose)
           {
             r.diagnosed = true;
-            const bool exact = solver != "fmm";
+            const bool exact = solver == "exact" || solver == "cone";
             const GT::Extension_check check =
                 exact ? GT::check_extension(mesh, rc, exact_on_mesh, 1e-9)
                       : GT::check_extension(mesh, rc, on_mesh_of(false), fmm_tolerance, fmm_skip_rings);

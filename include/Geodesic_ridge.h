@@ -21,6 +21,10 @@
 #include <Geodesic_ridge/isolines.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>
 #include <Geodesic_ridge/solvers/Fast_marching_solver.h>
+#include <Geodesic_ridge/solvers/Dijkstra_solver.h>
+#ifdef CGAL_EIGEN3_ENABLED // the heat method needs Eigen
+#include <Geodesic_ridge/solvers/Heat_method_solver.h>
+#endif
 #include <Geodesic_ridge/IO/png.h>
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/IO/polylines.h>

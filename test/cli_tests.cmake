@@ -42,7 +42,9 @@ cli_failure(tolerance_negative    "out of range" ${CLI} ${D}/torus_1k.off --sour
 cli_failure(tolerance_not_number  "tolerance 'x1' is not a finite number" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance x1)
 cli_failure(tolerance_nan         "tolerance 'nan' is not a finite number" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance nan)
 cli_failure(unwritable_output     "cannot open" ${CLI} ${D}/torus_1k.off --source-vertex 0 --rough-cut /nonexistent-dir/x.txt)
-cli_failure(unknown_solver        "unknown solver 'heat'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver heat)
+cli_failure(unknown_solver        "unknown solver 'vtp'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver vtp)
+cli_failure(heat_point_source     "the heat solver takes a vertex as the source" ${CLI} ${D}/torus_1k.off
+            --source-point 0 1.3573468999999998 0.7423328699999999 1.4680988666666668 --solver heat)
 cli_failure(unwritable_png        "cannot open" ${CLI} ${D}/torus_1k.off --source-vertex 0 --png /nonexistent-dir/x.png)
 
 # Good input: every bundled mesh, from a vertex and from a surface point.
@@ -63,15 +65,17 @@ add_test(NAME cli.rough_cut.torus_1k_source_point
          COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off
                  "-DSOURCE=--source-point;0;1.3573468999999998;0.7423328699999999;1.4680988666666668" -DOUT=${OUTDIR} -DGENUS=1
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
-# the fast-marching solver on the extended surface: the same checks
-foreach(mesh_genus bunny_1k:0 eight:2)
-  string(REPLACE ":" ";" mg ${mesh_genus})
-  list(GET mg 0 mesh)
-  list(GET mg 1 genus)
-  add_test(NAME cli.ridge.fmm.${mesh}
-           COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/${mesh}.off "-DSOURCE=--source-vertex;5"
-                   "-DEXTRA=--solver;fmm" -DOUT=${OUTDIR} -DGENUS=${genus}
-                   -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
+# the approximate solvers on the extended surface: the same checks
+foreach(solver fmm heat heat-idt dijkstra)
+  foreach(mesh_genus bunny_1k:0 eight:2)
+    string(REPLACE ":" ";" mg ${mesh_genus})
+    list(GET mg 0 mesh)
+    list(GET mg 1 genus)
+    add_test(NAME cli.ridge.${solver}.${mesh}
+             COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/${mesh}.off "-DSOURCE=--source-vertex;5"
+                     "-DEXTRA=--solver;${solver}" -DOUT=${OUTDIR}/${solver} -DGENUS=${genus}
+                     -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
+  endforeach()
 endforeach()
 
 # The region-wise field: queries, refined mesh, iso-lines, ridge locations,

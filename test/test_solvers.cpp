@@ -7,19 +7,26 @@
 //  * the exact solver on real meshes;
 //  * Face_location sources: the corners start at their straight distances;
 //  * meshes with a boundary (an extended surface), and the pipeline's
-//    schedules that use fast marching (the tree of stage 1, the extension).
+//    schedules that use fast marching (the tree of stage 1, the extension);
+//  * the baselines: Dijkstra on the edges (an upper bound of the exact
+//    distance) and the heat method (smooth, a few per cent off).
 #include "support/analytic_meshes.h"
 
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>
+#include <Geodesic_ridge/solvers/Dijkstra_solver.h>
 #include <Geodesic_ridge/solvers/Fast_marching_solver.h>
+#include <Geodesic_ridge/solvers/Heat_method_solver.h>
+
+#include <CGAL/convex_hull_3.h>
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -78,37 +85,182 @@ TEST_CASE("fast marching: straight distances on the flat top sheet of a doubly c
   }
 }
 
+namespace {
+
+struct Relative_errors
+{
+  double mean = 0, worst = 0, lowest = 0; // (solver - exact) / exact over the vertices but the source
+};
+
+template <class Solver>
+Relative_errors against_exact(const Mesh& m, vertex_descriptor s, const Solver& solver)
+{
+  const std::vector<double> d = distances_from(m, s, solver);
+  const std::vector<double> exact = distances_from(m, s, Geodesic_ridge::Exact_solver());
+  Relative_errors r;
+  std::size_t counted = 0;
+  for(vertex_descriptor v : m.vertices())
+  {
+    REQUIRE(std::isfinite(d[v]));
+    if(v == s) continue;
+    const double rel = (d[v] - exact[v]) / exact[v];
+    r.mean += std::abs(rel);
+    r.worst = std::max(r.worst, std::abs(rel));
+    r.lowest = std::min(r.lowest, rel);
+    ++counted;
+  }
+  r.mean /= counted;
+  CHECK(d[s] == 0);
+  return r;
+}
+
+} // namespace
+
 TEST_CASE("fast marching against the exact solver on real meshes", "[solvers]")
 {
   for(const std::string name : {"bunny_1k.off", "torus_1k.off", "eight.off", "knot_3k.off"})
   {
     const Mesh m = load(name);
     const vertex_descriptor s(static_cast<Mesh::size_type>(m.number_of_vertices() / 3));
-    const std::vector<double> fmm = distances_from(m, s, Geodesic_ridge::Fast_marching_solver());
-    const std::vector<double> exact = distances_from(m, s, Geodesic_ridge::Exact_solver());
-    double sum = 0, worst = 0, lowest = 0;
-    std::size_t counted = 0;
-    for(vertex_descriptor v : m.vertices())
-    {
-      REQUIRE(std::isfinite(fmm[v]));
-      if(v == s) continue;
-      const double rel = (fmm[v] - exact[v]) / exact[v];
-      sum += std::abs(rel);
-      worst = std::max(worst, std::abs(rel));
-      lowest = std::min(lowest, rel);
-      ++counted;
-    }
-    const double mean = sum / counted;
+    const Relative_errors r = against_exact(m, s, Geodesic_ridge::Fast_marching_solver());
     std::cout << "[solvers] fast marching vs exact, " << name << " from " << s << ": mean relative error "
-              << mean << ", worst " << worst << ", lowest " << lowest << "\n";
+              << r.mean << ", worst " << r.worst << ", lowest " << r.lowest << "\n";
     INFO(name);
-    CHECK(fmm[s] == 0);
     // measured: mean 0.005-0.026, worst 0.015-0.27 (bunny_1k: obtuse
     // triangles, where rays miss and edge paths are taken), lowest -0.02
-    CHECK(mean < 0.035);
-    CHECK(worst < 0.35);
-    CHECK(lowest > -0.05);
+    CHECK(r.mean < 0.035);
+    CHECK(r.worst < 0.35);
+    CHECK(r.lowest > -0.05);
   }
+}
+
+TEST_CASE("Dijkstra on the edges: an upper bound of the exact distance, exact along a straight edge path", "[solvers]")
+{
+  for(const std::string name : {"bunny_1k.off", "torus_1k.off", "knot_3k.off"})
+  {
+    const Mesh m = load(name);
+    const vertex_descriptor s(static_cast<Mesh::size_type>(m.number_of_vertices() / 3));
+    const Relative_errors r = against_exact(m, s, Geodesic_ridge::Dijkstra_solver());
+    std::cout << "[solvers] dijkstra vs exact, " << name << " from " << s << ": mean relative error " << r.mean
+              << ", worst " << r.worst << ", lowest " << r.lowest << "\n";
+    INFO(name);
+    // measured: mean 0.075-0.13, worst 0.18-0.53
+    CHECK(r.lowest > -1e-12); // no path along edges is shorter than the geodesic
+    CHECK(r.mean < 0.2);
+  }
+  // the flat square's grid: along a grid line the edge path is the segment,
+  // across the diagonal of the cells it is longer by the staircase's excess
+  const Doubly_covered_square sq = make_doubly_covered_square(8, 0, 0);
+  const std::vector<double> d = distances_from(sq.mesh, sq.top[0], Geodesic_ridge::Dijkstra_solver());
+  CHECK(d[sq.top[8]] == Approx(1.0).epsilon(1e-12));
+  CHECK(d[sq.top[4 + 9 * 2]] >= std::hypot(0.5, 0.25) - 1e-12);
+  // from a point inside a face, its corners start at their straight distances
+  const face_descriptor f(3);
+  const auto h = sq.mesh.halfedge(f);
+  const std::array<double, 3> w = {{0.2, 0.3, 0.5}};
+  const std::vector<double> dp =
+      distances_from(sq.mesh, std::make_pair(f, w), Geodesic_ridge::Dijkstra_solver());
+  const Point_3 p = CGAL::barycenter(sq.mesh.point(sq.mesh.source(h)), w[0], sq.mesh.point(sq.mesh.target(h)), w[1],
+                                     sq.mesh.point(sq.mesh.target(sq.mesh.next(h))), w[2]);
+  CHECK(dp[sq.mesh.source(h)] == Approx(std::sqrt(CGAL::squared_distance(p, sq.mesh.point(sq.mesh.source(h))))));
+}
+
+TEST_CASE("the heat method against the exact solver, direct and on the intrinsic Delaunay triangulation", "[solvers]")
+{
+  for(const std::string name : {"bunny_1k.off", "torus_1k.off", "knot_3k.off"})
+  {
+    const Mesh m = load(name);
+    const vertex_descriptor s(static_cast<Mesh::size_type>(m.number_of_vertices() / 3));
+    const Relative_errors direct = against_exact(m, s, Geodesic_ridge::Heat_method_solver<>());
+    const Relative_errors idt = against_exact(m, s, Geodesic_ridge::Heat_method_idt_solver());
+    std::cout << "[solvers] heat vs exact, " << name << " from " << s << ": mean relative error " << direct.mean
+              << ", worst " << direct.worst << "; heat-idt: " << idt.mean << ", worst " << idt.worst << "\n";
+    INFO(name);
+    // measured: mean 0.035-0.078, worst 0.21-0.55
+    CHECK(direct.mean < 0.1);
+    CHECK(idt.mean < 0.1);
+  }
+  // a point source inside a face is refused (CGAL 5.5: vertex sources only)
+  const Mesh m = load("bunny_1k.off");
+  std::vector<double> d(m.number_of_vertices());
+  CHECK_THROWS_AS(Geodesic_ridge::Heat_method_solver<>()(m, std::make_pair(face_descriptor(0), std::array<double, 3>{{0.2, 0.3, 0.5}}),
+                                                         CGAL::make_property_map(d)),
+                  Geodesic_ridge::Invalid_source_error);
+}
+
+// The convex hull of random points on the unit sphere: a closed mesh with
+// obtuse triangles and slivers (the hull of random points has both), where
+// the polyhedral distance converges to the great-circle distance. Every
+// solver is compared with the great circle, on the vertices farther than 0.3
+// from the source (near it the polyhedral error is a larger fraction).
+TEST_CASE("every solver against great-circle distances on a sphere with obtuse and sliver triangles", "[solvers]")
+{
+  const unsigned seed = test_seed(20261203);
+  std::mt19937 random(seed);
+  std::normal_distribution<double> normal;
+  std::vector<Point_3> points;
+  for(int i = 0; i < 3000; ++i)
+  {
+    const Vector_3 v(normal(random), normal(random), normal(random));
+    points.push_back(CGAL::ORIGIN + v / std::sqrt(v.squared_length()));
+  }
+  Mesh m;
+  CGAL::convex_hull_3(points.begin(), points.end(), m);
+  std::size_t obtuse = 0, slivers = 0;
+  for(face_descriptor f : m.faces())
+  {
+    const auto h = m.halfedge(f);
+    const Point_3 p[3] = {m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h)))};
+    double smallest = 180;
+    for(int k = 0; k < 3; ++k)
+    {
+      const double a = CGAL::approximate_angle(p[(k + 1) % 3], p[k], p[(k + 2) % 3]);
+      obtuse += a > 110;
+      smallest = std::min(smallest, a);
+    }
+    slivers += smallest < 10;
+  }
+  INFO("seed " << seed << ", " << m.number_of_faces() << " faces, " << obtuse << " obtuse (> 110 deg), " << slivers
+                << " slivers (< 10 deg)");
+  REQUIRE(obtuse > 10);
+  REQUIRE(slivers > 10);
+  const vertex_descriptor s(0);
+  const Vector_3 ps = m.point(s) - CGAL::ORIGIN;
+  auto great_circle_error = [&](const std::vector<double>& d) {
+    double sum = 0, worst = 0;
+    std::size_t n = 0;
+    for(vertex_descriptor v : m.vertices())
+    {
+      const double c = std::max(-1.0, std::min(1.0, ps * (m.point(v) - CGAL::ORIGIN)));
+      const double arc = std::acos(c);
+      if(arc < 0.3) continue;
+      const double rel = std::abs(d[v] - arc) / arc;
+      sum += rel;
+      worst = std::max(worst, rel);
+      ++n;
+    }
+    return std::make_pair(sum / n, worst);
+  };
+  const auto exact = great_circle_error(distances_from(m, s, Geodesic_ridge::Exact_solver()));
+  const auto fmm = great_circle_error(distances_from(m, s, Geodesic_ridge::Fast_marching_solver()));
+  const auto heat = great_circle_error(distances_from(m, s, Geodesic_ridge::Heat_method_solver<>()));
+  const auto idt = great_circle_error(distances_from(m, s, Geodesic_ridge::Heat_method_idt_solver()));
+  const auto dijkstra = great_circle_error(distances_from(m, s, Geodesic_ridge::Dijkstra_solver()));
+  std::cout << "[solvers] sphere, seed " << seed << ", " << m.number_of_faces() << " faces, " << obtuse
+            << " obtuse corners, " << slivers << " slivers; mean / worst relative error against the great circle: exact "
+            << exact.first << " / " << exact.second << ", fmm " << fmm.first << " / " << fmm.second << ", heat "
+            << heat.first << " / " << heat.second << ", heat-idt " << idt.first << " / " << idt.second
+            << ", dijkstra " << dijkstra.first << " / " << dijkstra.second << "\n";
+  // measured (seed 20261203: 5,996 faces, 1,059 obtuse corners, 398 slivers),
+  // mean / worst: exact 0.0010 / 0.0019 (the polyhedron is shorter than the
+  // sphere), fmm 0.0030 / 0.015, heat and heat-idt 0.017 / 0.060 (the same:
+  // the hull of points on a sphere is Delaunay already), dijkstra 0.056 / 0.16
+  CHECK(exact.second < 0.005);
+  CHECK(fmm.first < 0.01);
+  CHECK(fmm.second < 0.05);
+  CHECK(heat.first < 0.04);
+  CHECK(idt.first < 0.04);
+  CHECK(dijkstra.first < 0.1);
 }
 
 TEST_CASE("fast marching from a Face_location and on a mesh with a boundary", "[solvers]")
@@ -209,21 +361,6 @@ TEST_CASE("pipeline schedules: predicted extension and the tree's distances", "[
       CHECK(double(faces[t][1]) >= 0.8 * double(faces[t][0]));
       CHECK(double(faces[t][1]) <= 1.25 * double(faces[t][0]));
     }
-  }
-}
-
-TEST_CASE("fast marching as the pipeline's solver gives a ridge with the right topology", "[solvers]")
-{
-  namespace p = Geodesic_ridge::parameters;
-  for(const std::string name : {"bunny_1k.off", "torus_1k.off"})
-  {
-    const Mesh m = load(name);
-    const auto rc = Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0),
-                                                        p::solver(Geodesic_ridge::Fast_marching_solver()));
-    INFO(name);
-    CHECK(rc.statistics.solver == std::string("fmm"));
-    CHECK(rc.statistics.ridge.components == 1);
-    CHECK(rc.statistics.ridge.cycles == (name == "torus_1k.off" ? 2u : 0u));
   }
 }
 

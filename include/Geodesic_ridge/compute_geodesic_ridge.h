@@ -15,6 +15,7 @@
 #include <Geodesic_ridge/rough_cut_locus.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>
 #include <Geodesic_ridge/solvers/Fast_marching_solver.h>
+#include <Geodesic_ridge/solvers/solver_traits.h>
 #include <Geodesic_ridge/timings.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -389,7 +390,7 @@ template <class Point, class Solver, class Wanted>
 void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vector<double>& distance,
               std::vector<Face_cone>& cones, const Wanted& wanted, const std::vector<std::array<double, 3> >& samples)
 {
-  if constexpr(std::is_same<std::decay_t<Solver>, Exact_solver>::value)
+  if constexpr(Geodesic_solver_traits<std::decay_t<Solver> >::is_exact)
   {
     if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance), cones, wanted, samples);
     else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), cones, wanted, samples);
@@ -448,8 +449,15 @@ template <class TriangleMesh, class FaceIndexMap, class Builder, class Solver, c
 class Extension_growth
 {
   enum class Pass { predicted, solve, anchored };
-  static constexpr bool solver_is_exact = std::is_same<std::decay_t<Solver>, Exact_solver>::value;
+  static constexpr bool solver_is_exact = Geodesic_solver_traits<std::decay_t<Solver> >::is_exact;
   static constexpr bool solver_is_fast_marching = std::is_same<std::decay_t<Solver>, Fast_marching_solver>::value;
+  // Whose fronts decide the growth: the solver's if it is exact or fast
+  // marching; any other approximate solver (heat, Dijkstra, a user's) solves
+  // once on the E that the predicted passes grew. Its errors are larger than
+  // fast marching's at E's border (the heat method's boundary condition), so
+  // judging the growth by them would grow E by noise (bunny_1k v0, heat-idt:
+  // the ring cap, 198 times M).
+  static constexpr bool solver_steers_growth = solver_is_exact || solver_is_fast_marching;
 
 public:
   // With `cones`, the solver's cones of the undominated copies are read at
@@ -582,6 +590,7 @@ private:
   // after this pass, is E grown again (else it is final)?
   bool grows(int solves_done) const
   {
+    if(pass_ == Pass::solve && !solver_steers_growth && schedule_.predicted) return false;
     const bool solves_left = pass_ != Pass::solve || solver_is_fast_marching || solves_done < schedule_.maximum_solves;
     return winning_ > 0 && solves_left && builder_.statistics().rings < schedule_.maximum_rings;
   }
@@ -657,7 +666,7 @@ Pipeline_options pipeline_options(const NamedParameters& np, const Solver& solve
   o.maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), default_maximum_rings);
   o.maximum_solves = choose_parameter(get_parameter(np, internal_np::maximum_solves_t()), default_maximum_solves);
   o.field = choose_parameter(get_parameter(np, internal_np::field_t()), Field::linear);
-  if(o.field == Field::cone && !std::is_same<std::decay_t<Solver>, Exact_solver>::value)
+  if(o.field == Field::cone && !Geodesic_solver_traits<std::decay_t<Solver> >::is_exact)
     throw Invalid_parameter_error(std::string("the cone field needs the exact solver, not '") + solver.name() + "'");
   o.cone_ridge_tolerance = get_number_in_range<internal_np::cone_ridge_tolerance_t>(
       np, default_cone_ridge_tolerance, std::numeric_limits<double>::min(), 1, false, "cone ridge tolerance", "(0, 1]");
@@ -680,7 +689,7 @@ class Geodesic_ridge_pipeline
   typedef typename Maps::Vertex_point_map VertexPointMap;
   typedef typename Maps::Face_index_map FaceIndexMap;
   typedef Extended_surface_builder<TriangleMesh, Maps> Builder;
-  static constexpr bool solver_is_exact = std::is_same<std::decay_t<Solver>, Exact_solver>::value;
+  static constexpr bool solver_is_exact = Geodesic_solver_traits<std::decay_t<Solver> >::is_exact;
 
 public:
   Geodesic_ridge_pipeline(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, const NamedParameters& np,

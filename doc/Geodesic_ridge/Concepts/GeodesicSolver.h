@@ -11,14 +11,15 @@ vertices of cone angle up to 4π (at the ends of the cut) are border vertices.
 
 \cgalHasModel `Geodesic_ridge::Exact_solver` (CGAL `Surface_mesh_shortest_path`)
 \cgalHasModel `Geodesic_ridge::Fast_marching_solver` (first-order fast marching)
-
-Planned models: heat method (`CGAL::Heat_method_3`), Dijkstra on the edge graph
-(an upper bound, for tests).
+\cgalHasModel `Geodesic_ridge::Heat_method_solver` (`CGAL::Heat_method_3`, direct or on the intrinsic Delaunay triangulation; vertex sources only)
+\cgalHasModel `Geodesic_ridge::Dijkstra_solver` (shortest paths along edges; a baseline)
 
 The named parameter `Geodesic_ridge::parameters::solver()` passes a model to the
 pipeline (user manual: \ref GeodesicRidgeSecSolvers). A model of your own is
-taken as approximate (as fast marching); \ref custom_solver_example.cpp is one in
-a few lines. Models are copied: keep state that must outlive a call behind a
+taken as approximate unless it declares `static constexpr bool is_exact = true`
+(`Geodesic_ridge::Geodesic_solver_traits`), in which case it must also offer
+`Exact_solver`'s cone query (a wrapper of `Exact_solver` forwards it);
+\ref custom_solver_example.cpp is one in a few lines. Models are copied: keep state that must outlive a call behind a
 pointer. This file documents the concept; it is no header to include.
 */
 class GeodesicSolver

@@ -44,6 +44,8 @@ struct Exact_solver
 {
   /// "exact"
   static const char* name() { return "exact"; }
+  /// `true`: exact distances, and the cone query (`Geodesic_solver_traits`)
+  static constexpr bool is_exact = true;
 
   /// Distances from vertex `s` of `tm` to every vertex, written to `distance`,
   /// on the geometry of the named parameter `vertex_point_map` (default: the
