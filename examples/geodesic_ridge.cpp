@@ -10,6 +10,7 @@
 //                  [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]
 //                  [--query IN.txt [--query-barycentric] --query-out OUT.txt] [--field linear|cone]
 //                  [--stats OUT.json] [--png OUT.png]
+//   geodesic_ridge MESH --sources FILE --out-dir DIR [--repair] [--tolerance T] [--solver NAME]
 //
 // Exit status: 0 success, 1 bad input (mesh, source, parameter), 2 bad command
 // line, 3 internal error. Every error is one line on stderr; so is every note
@@ -23,6 +24,7 @@
 #include <Geodesic_ridge/IO/polylines.h>
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/compute_geodesic_ridges.h>
 #include <Geodesic_ridge/connected_component.h>
 #include <Geodesic_ridge/distance_field.h>
 #include <Geodesic_ridge/isolines.h>
@@ -38,13 +40,19 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/bounding_box.h>
 
+#include <unistd.h>
+
+#include <boost/iterator/function_output_iterator.hpp>
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <map>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -84,6 +92,7 @@ const char* synopsis =
     "                      [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]\n"
     "                      [--query IN.txt [--query-barycentric] --query-out OUT.txt]\n"
     "                      [--field linear|cone] [--stats OUT.json] [--png OUT.png]\n"
+    "       geodesic_ridge MESH --sources FILE --out-dir DIR [--repair] [--tolerance T] [--solver NAME]\n"
     "  MESH: a manifold surface, closed or with borders (.off, .obj, .ply; PLY triangle strips too).\n"
     "  Polygons are triangulated (CGAL's triangulate_face rule; a note on stderr says how many, and how\n"
     "  many were not planar); dirty meshes are refused, naming what --repair would fix.\n"
@@ -149,6 +158,7 @@ struct Options
   std::string query, query_out;
   bool query_barycentric = false;
   Geodesic_ridge::Field field = Geodesic_ridge::Field::linear;
+  std::string sources, out_dir;           // many sources: --sources FILE --out-dir DIR
 };
 
 // Boost's multitoken() takes any number of values; --source-point takes 4, the
@@ -208,6 +218,11 @@ po::options_description describe()
                             "field) or cone (exact solver only: per face copy, the exact solver's cones; --ridge, "
                             "--ridge-locations and the picture's ridge are where the cones meet; the refined mesh, "
                             "the iso-lines and the picture's colours stay linear)")
+    ("sources", text("FILE"), "many sources instead of one, one per line: 'V' (a vertex) or 'FACE X Y Z' (a point of "
+                              "the face); '#' starts a comment. With --out-dir; in parallel when built with TBB")
+    ("out-dir", text("DIR"), "with --sources: for the k-th source (0-based) DIR/ridge_k.polylines.txt and "
+                             "DIR/ridge_k.json (its source, counts and timings); a progress line on stderr when it is "
+                             "a terminal")
     ("rough-cut", text("OUT"), "write the rough cut locus K (stage 1) as CGAL polylines")
     ("stats", text("OUT.json"), "write counts, timings and parameters as JSON")
     ("png", text("OUT.png"), "picture: the mesh from two opposite sides coloured by the distance (viridis, dark "
@@ -319,8 +334,17 @@ Options parse(int argc, char** argv)
   o.repair = vm["repair"].as<bool>();
   o.isolines_from_vertices = vm["isolines-from-vertices"].as<bool>();
   o.query_barycentric = vm["query-barycentric"].as<bool>();
-  if(!o.source_vertex && !o.source_face)
-    throw Usage_error("missing the source: --source-vertex V or --source-point FACE X Y Z");
+  o.sources = text(vm, "sources"), o.out_dir = text(vm, "out-dir");
+  if(o.sources.empty() != o.out_dir.empty()) throw Usage_error("--sources and --out-dir go together");
+  if(!o.sources.empty())
+  {
+    if(o.source_vertex || o.source_face) throw Usage_error("give --sources or one source, not both");
+    if(!o.rough_cut.empty() || !o.stats.empty() || !o.ridge.empty() || !o.png.empty() || !o.ridge_locations.empty() ||
+       !o.refined.empty() || !o.query.empty() || !o.isolines.empty())
+      throw Usage_error("with --sources the outputs go to --out-dir; the other outputs are for one source");
+  }
+  else if(!o.source_vertex && !o.source_face)
+    throw Usage_error("missing the source: --source-vertex V or --source-point FACE X Y Z (or --sources FILE)");
   if(o.query.empty() != o.query_out.empty()) throw Usage_error("--query and --query-out go together");
   if(o.query_barycentric && o.query.empty()) throw Usage_error("--query-barycentric needs --query");
   if(o.isolines_from_vertices && o.isolines.empty())
@@ -417,13 +441,14 @@ Location read_query(const std::vector<std::string>& t, const Mesh& mesh, const F
   return locate(map, mesh, face, Point_3(v[0], v[1], v[2]), "point");
 }
 
-// One query per line of `filename`; '#' starts a comment. Errors name the line.
-std::vector<Location> read_queries(const std::string& filename, const Mesh& mesh, const File_map& map,
-                                   bool barycentric)
+// One item per line of `filename` (`kind`: "query", "source"), made by
+// `read(tokens)`; '#' starts a comment. Errors name the file and the line.
+template <class Read>
+auto read_lines(const std::string& filename, const std::string& kind, const Read& read)
 {
   std::ifstream is(filename);
-  if(!is) throw Geodesic_ridge::Invalid_parameter_error("cannot open query file '" + filename + "'");
-  std::vector<Location> queries;
+  if(!is) throw Geodesic_ridge::Invalid_parameter_error("cannot open " + kind + " file '" + filename + "'");
+  std::vector<decltype(read(std::vector<std::string>()))> items;
   std::string line;
   for(std::size_t number = 1; std::getline(is, line); ++number)
   {
@@ -435,16 +460,24 @@ std::vector<Location> read_queries(const std::string& filename, const Mesh& mesh
     if(t.empty()) continue;
     try
     {
-      queries.push_back(read_query(t, mesh, map, barycentric));
+      items.push_back(read(t));
     }
     catch(const Geodesic_ridge::Error& e)
     {
-      throw Geodesic_ridge::Invalid_parameter_error("query file '" + filename + "' line " + std::to_string(number) +
+      throw Geodesic_ridge::Invalid_parameter_error(kind + " file '" + filename + "' line " + std::to_string(number) +
                                                     ": " + e.what());
     }
   }
-  if(is.bad()) throw Geodesic_ridge::Invalid_parameter_error("cannot read query file '" + filename + "'");
-  return queries;
+  if(is.bad()) throw Geodesic_ridge::Invalid_parameter_error("cannot read " + kind + " file '" + filename + "'");
+  return items;
+}
+
+std::vector<Location> read_queries(const std::string& filename, const Mesh& mesh, const File_map& map,
+                                   bool barycentric)
+{
+  return read_lines(filename, "query", [&](const std::vector<std::string>& t) {
+    return read_query(t, mesh, map, barycentric);
+  });
 }
 
 template <class Lines>
@@ -619,21 +652,27 @@ std::vector<std::optional<Location> > in_component(const Component_map* cc, cons
   return result;
 }
 
-// The ridge of the source; the solver is a type: one call per model.
-Ridge compute(const Mesh& mesh, const Source& source, const Options& o)
+// Calls f with the named parameters of the options; the solver is a type:
+// one instantiation per model.
+template <class F>
+auto with_parameters(const Options& o, const F& f)
 {
   namespace p = Geodesic_ridge::parameters;
-  auto compute = [&](const auto& s) {
-    auto with = [&](const auto& solver) {
-      return Geodesic_ridge::compute_ridge_curve(mesh, s, p::tolerance(o.tolerance, p::solver(solver)));
-    };
-    if(o.solver == "fmm") return with(Geodesic_ridge::Fast_marching_solver());
-    if(o.solver == "heat") return with(Geodesic_ridge::Heat_method_solver<>());
-    if(o.solver == "heat-idt") return with(Geodesic_ridge::Heat_method_idt_solver());
-    if(o.solver == "dijkstra") return with(Geodesic_ridge::Dijkstra_solver());
-    return Geodesic_ridge::compute_ridge_curve(mesh, s, p::tolerance(o.tolerance, p::field(o.field)));
-  };
-  return source.vertex ? compute(*source.vertex) : compute(source.point);
+  auto with = [&](const auto& solver) { return f(p::tolerance(o.tolerance, p::solver(solver))); };
+  if(o.solver == "fmm") return with(Geodesic_ridge::Fast_marching_solver());
+  if(o.solver == "heat") return with(Geodesic_ridge::Heat_method_solver<>());
+  if(o.solver == "heat-idt") return with(Geodesic_ridge::Heat_method_idt_solver());
+  if(o.solver == "dijkstra") return with(Geodesic_ridge::Dijkstra_solver());
+  return f(p::tolerance(o.tolerance, p::field(o.field)));
+}
+
+// The ridge of the source.
+Ridge compute(const Mesh& mesh, const Source& source, const Options& o)
+{
+  return with_parameters(o, [&](const auto& np) {
+    return source.vertex ? Geodesic_ridge::compute_ridge_curve(mesh, *source.vertex, np)
+                         : Geodesic_ridge::compute_ridge_curve(mesh, source.point, np);
+  });
 }
 
 void print_summary(const Options& o, const Ridge& ridge, const File_map& map)
@@ -921,6 +960,109 @@ int run(const Options& o)
   return 0;
 }
 
+// --sources: a line 'V' (a file vertex) or 'FACE X Y Z' (a point of a file
+// face), as a location of the mesh (a vertex as a corner of a face of it).
+struct Batch_source
+{
+  Location location;
+  std::string text; // the line, for the outputs
+};
+
+Batch_source read_source_line(const std::vector<std::string>& t, const Mesh& mesh, const File_map& map)
+{
+  std::string text = t[0];
+  for(std::size_t k = 1; k < t.size(); ++k) text += " " + t[k];
+  if(t.size() == 4) return {read_query(t, mesh, map, false), text};
+  if(t.size() != 1)
+    throw Geodesic_ridge::Invalid_parameter_error("expected 'V' or 'FACE X Y Z', got " + std::to_string(t.size()) +
+                                                  " fields");
+  const vertex_descriptor v = source_vertex(mesh, map, parse_index("source vertex", t[0]));
+  return {PMP::locate_vertex<double>(v, mesh), text};
+}
+
+void write_batch_stats(const std::string& filename, const Options& o, const Batch_source& source, const Ridge& rc)
+{
+  Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source.text}, {"tolerance", o.tolerance},
+                            {"solver", o.solver}, {"repair", o.repair}}},
+            {"ridge", {{"polylines", rc.polylines.size()}}},
+            {"statistics", rc.statistics}};
+  Json timings;
+  for(const auto& [step, seconds] : rc.timings.steps()) timings[step] = seconds;
+  timings["total"] = rc.timings.total();
+  j["timings_seconds"] = timings;
+  std::ofstream os(filename);
+  if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
+  os << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+  os.flush();
+  if(!os) throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+}
+
+// Many sources: grouped by connected component (each group one batch, the
+// source-independent work done once per component), outputs per source.
+int run_batch(const Options& o)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  Mesh file_mesh;
+  const File_map file_map = read_mesh(o, file_mesh);
+  const std::vector<Batch_source> sources = read_lines(o.sources, "source", [&](const std::vector<std::string>& t) {
+    return read_source_line(t, file_mesh, file_map);
+  });
+  if(sources.empty()) throw Geodesic_ridge::Invalid_parameter_error("source file '" + o.sources + "' has no source");
+  std::error_code ec;
+  std::filesystem::create_directories(o.out_dir, ec);
+  if(ec || !std::filesystem::is_directory(o.out_dir))
+    throw Geodesic_ridge::Error("cannot create the output directory '" + o.out_dir + "'");
+  std::vector<std::size_t> id(file_mesh.number_of_faces());
+  const std::size_t components =
+      PMP::connected_components(file_mesh, boost::make_iterator_property_map(id.begin(), get(CGAL::face_index, file_mesh)));
+  std::map<std::size_t, std::vector<std::size_t> > by_component;
+  for(std::size_t k = 0; k < sources.size(); ++k) by_component[id[std::size_t(sources[k].location.first)]].push_back(k);
+  const bool terminal = isatty(fileno(stderr));
+  std::size_t done = 0;
+  for(const auto& [component_id, members] : by_component)
+  {
+    Mesh component;
+    std::optional<Component_map> cc;
+    if(components > 1) cc = Geodesic_ridge::extract_connected_component(file_mesh, sources[members[0]].location.first, component);
+    const Mesh& mesh = cc ? component : file_mesh;
+    std::vector<Location> locations;
+    for(std::size_t k : members)
+      locations.push_back(cc ? *cc->component_location(sources[k].location) : sources[k].location);
+    std::size_t next = 0;
+    auto write = [&](const Ridge& rc) {
+      const std::size_t k = members[next++];
+      const std::string base = (std::filesystem::path(o.out_dir) / ("ridge_" + std::to_string(k))).string();
+      Geodesic_ridge::IO::write_polylines(base + ".polylines.txt", points_of(rc.polylines));
+      write_batch_stats(base + ".json", o, sources[k], rc);
+      if(terminal) std::cerr << "\rgeodesic_ridge: " << ++done << " of " << sources.size() << " ridges" << std::flush;
+    };
+    try
+    {
+      with_parameters(o, [&](const auto& np) {
+        Geodesic_ridge::compute_ridge_curves(mesh, locations, boost::make_function_output_iterator(write), np);
+        return 0;
+      });
+    }
+    catch(const Geodesic_ridge::Algorithm_error& e)
+    {
+      if(terminal) std::cerr << "\n";
+      throw Geodesic_ridge::Algorithm_error("source " + std::to_string(members[next]) + " ('" +
+                                            sources[members[next]].text + "'): " + e.what());
+    }
+  }
+  if(terminal) std::cerr << "\n";
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cout << "mesh " << o.mesh << ": " << sources.size() << " sources, " << by_component.size()
+            << (by_component.size() == 1 ? " component" : " components") << "; wrote " << o.out_dir
+            << "/ridge_k.polylines.txt and ridge_k.json for k = 0.." << sources.size() - 1 << " (" << seconds
+            << " s";
+#ifdef CGAL_LINKED_WITH_TBB
+  std::cout << ", in parallel";
+#endif
+  std::cout << ")\n";
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -928,7 +1070,7 @@ int main(int argc, char** argv)
   try
   {
     const Options o = parse(argc, argv);
-    return o.help ? 0 : run(o);
+    return o.help ? 0 : !o.sources.empty() ? run_batch(o) : run(o);
   }
   catch(const Usage_error& e)
   {

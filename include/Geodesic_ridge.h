@@ -16,6 +16,7 @@
 #include <Geodesic_ridge/lower_envelope.h>
 #include <Geodesic_ridge/ridge_curve.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/compute_geodesic_ridges.h>
 #include <Geodesic_ridge/distance_field.h>
 #include <Geodesic_ridge/refined_mesh.h>
 #include <Geodesic_ridge/isolines.h>

@@ -5,7 +5,7 @@
 #   --doc   also the packages that build the manual (scripts/build_manual.sh)
 set -euo pipefail
 packages=(g++ make cmake libcgal-dev libboost-graph-dev libgmp-dev libmpfr-dev catch2 libeigen3-dev ccache
-          libboost-program-options-dev nlohmann-json3-dev libpng-dev)
+          libboost-program-options-dev nlohmann-json3-dev libpng-dev libtbb-dev)
 if [ "${1:-}" = "--doc" ]; then packages+=(doxygen graphviz); fi
 missing=()
 for p in "${packages[@]}"; do

@@ -43,6 +43,14 @@ cli_failure(tolerance_not_number  "tolerance 'x1' is not a finite number" ${CLI}
 cli_failure(tolerance_nan         "tolerance 'nan' is not a finite number" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance nan)
 cli_failure(unwritable_output     "cannot open" ${CLI} ${D}/torus_1k.off --source-vertex 0 --rough-cut /nonexistent-dir/x.txt)
 cli_failure(unknown_solver        "unknown solver 'vtp'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver vtp)
+cli_failure(sources_without_dir   "--sources and --out-dir go together" ${CLI} ${D}/torus_1k.off --sources ${B}/queries_torus_1k_points.txt)
+cli_failure(sources_and_source    "give --sources or one source, not both" ${CLI} ${D}/torus_1k.off --source-vertex 0
+            --sources ${B}/queries_torus_1k_points.txt --out-dir ${CMAKE_CURRENT_BINARY_DIR}/cli_out/never)
+cli_failure(sources_bad_line      "source file '.*queries_torus_1k_barycentric.txt' line 3: point .* is not on face"
+            ${CLI} ${D}/torus_1k.off --sources ${B}/queries_torus_1k_barycentric.txt --out-dir ${CMAKE_CURRENT_BINARY_DIR}/cli_out/never)
+add_test(NAME cli.batch
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DD=${D} -DB=${B} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/cli_out
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_batch.cmake)
 cli_failure(heat_point_source     "the heat solver takes a vertex as the source" ${CLI} ${D}/torus_1k.off
             --source-point 0 1.3573468999999998 0.7423328699999999 1.4680988666666668 --solver heat)
 cli_failure(unwritable_png        "cannot open" ${CLI} ${D}/torus_1k.off --source-vertex 0 --png /nonexistent-dir/x.png)

@@ -14,6 +14,7 @@
 
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/compute_geodesic_ridges.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>
 #include <Geodesic_ridge/solvers/Dijkstra_solver.h>
 #include <Geodesic_ridge/solvers/Fast_marching_solver.h>
@@ -405,4 +406,87 @@ TEST_CASE("a user's vertex point map reaches the solvers and every stage", "[sol
       for(std::size_t j = 0; j < ra.polylines[i].size(); ++j) CHECK(ra.polylines[i][j].point == rb.polylines[i][j].point);
     }
   }
+}
+
+// ---------------------------------------------------------------------------
+// Many sources at once: the batch gives, per source and in order, what a
+// single call gives, bit for bit, serially and in parallel (with TBB).
+
+namespace {
+
+template <class Result>
+void check_same_ridge(const Result& batch, const Result& single, const std::string& what)
+{
+  INFO(what);
+  CHECK(batch.statistics.solves == single.statistics.solves);
+  CHECK(batch.statistics.extended_surface.number_of_faces == single.statistics.extended_surface.number_of_faces);
+  CHECK(batch.vertex_distances == single.vertex_distances);
+  REQUIRE(batch.polylines.size() == single.polylines.size());
+  for(std::size_t i = 0; i < single.polylines.size(); ++i)
+  {
+    REQUIRE(batch.polylines[i].size() == single.polylines[i].size());
+    for(std::size_t j = 0; j < single.polylines[i].size(); ++j)
+      CHECK(batch.polylines[i][j].point == single.polylines[i][j].point);
+  }
+}
+
+} // namespace
+
+TEST_CASE("a batch of sources gives what single calls give, serially and in parallel", "[solvers][batch]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  typedef std::pair<face_descriptor, std::array<double, 3> > Face_location;
+#ifdef CGAL_LINKED_WITH_TBB
+  std::cout << "[batch] TBB: yes\n";
+#else
+  std::cout << "[batch] TBB: no (the parallel runs are serial)\n";
+#endif
+  for(const std::string name : {"bunny_1k.off", "eight.off"})
+  {
+    const Mesh m = load(name);
+    std::vector<vertex_descriptor> vertices;
+    for(std::size_t i = 0; i < 9; ++i)
+      vertices.push_back(vertex_descriptor(static_cast<Mesh::size_type>(i * m.number_of_vertices() / 9)));
+    const auto np = p::solver(Geodesic_ridge::Fast_marching_solver());
+    typedef decltype(Geodesic_ridge::compute_ridge_curve(m, vertices[0], np)) Result;
+    std::vector<Result> serial, parallel;
+    Geodesic_ridge::compute_ridge_curves<CGAL::Sequential_tag>(m, vertices, std::back_inserter(serial), np);
+    Geodesic_ridge::compute_ridge_curves<CGAL::Parallel_if_available_tag>(m, vertices, std::back_inserter(parallel), np);
+    REQUIRE(serial.size() == vertices.size());
+    REQUIRE(parallel.size() == vertices.size());
+    for(std::size_t i = 0; i < vertices.size(); ++i)
+    {
+      const Result single = Geodesic_ridge::compute_ridge_curve(m, vertices[i], np);
+      const std::string what = name + " source vertex " + std::to_string(std::size_t(vertices[i]));
+      check_same_ridge(serial[i], single, what + " (serial)");
+      check_same_ridge(parallel[i], single, what + " (parallel)");
+    }
+    // Face_locations, the exact solver, and the polylines-only version
+    const std::vector<Face_location> points = {{face_descriptor(3), {{0.2, 0.3, 0.5}}},
+                                               {face_descriptor(40), {{0.5, 0.5, 0.0}}}};
+    std::vector<std::vector<std::vector<Point_3> > > ridges;
+    Geodesic_ridge::compute_geodesic_ridges(m, points, std::back_inserter(ridges));
+    REQUIRE(ridges.size() == points.size());
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      std::vector<std::vector<Point_3> > single;
+      Geodesic_ridge::compute_geodesic_ridge(m, points[i], std::back_inserter(single));
+      CHECK(ridges[i] == single);
+    }
+  }
+  // a bad source is reported before any work, with the type of a single call's error
+  const Mesh m = load("bunny_1k.off");
+  std::vector<Face_location> bad = {{face_descriptor(3), {{0.2, 0.3, 0.5}}}, {face_descriptor(5), {{0.7, 0.7, 0.7}}}};
+  std::size_t written = 0;
+  CHECK_THROWS_AS(Geodesic_ridge::compute_geodesic_ridges(m, bad, boost::make_function_output_iterator([&](const auto&) { ++written; })),
+                  Geodesic_ridge::Invalid_source_error);
+  CHECK(written == 0);
+  CHECK_THROWS_AS(Geodesic_ridge::compute_geodesic_ridges(m, std::vector<vertex_descriptor>{vertex_descriptor(0)},
+                                                          boost::make_function_output_iterator([&](const auto&) { ++written; }),
+                                                          p::tolerance(0.7)),
+                  Geodesic_ridge::Invalid_parameter_error);
+  // no sources: nothing written, nothing thrown
+  std::vector<std::vector<std::vector<Point_3> > > none;
+  Geodesic_ridge::compute_geodesic_ridges(m, std::vector<vertex_descriptor>(), std::back_inserter(none));
+  CHECK(none.empty());
 }

@@ -692,10 +692,11 @@ class Geodesic_ridge_pipeline
   static constexpr bool solver_is_exact = Geodesic_solver_traits<std::decay_t<Solver> >::is_exact;
 
 public:
+  // `angles`: the mesh's corner angles, if a batch of sources computed them once
   Geodesic_ridge_pipeline(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, const NamedParameters& np,
-                          const Solver& solver, const Maps& maps)
+                          const Solver& solver, const Maps& maps, const Corner_angles* angles = nullptr)
     : tm_(tm), src_(src), np_(np), solver_(solver), options_(pipeline_options(np, solver)), maps_(maps),
-      st_(result_.statistics), timings_(result_.timings)
+      angles_(angles), st_(result_.statistics), timings_(result_.timings)
   {}
 
   Ridge_curve<TriangleMesh, Point> run()
@@ -736,7 +737,7 @@ private:
 
   void rough_cut_locus(const std::vector<double>& field)
   {
-    result_.rough_cut_locus = rough_cut_locus_impl(tm_, src_, np_, &field);
+    result_.rough_cut_locus = rough_cut_locus_impl(tm_, src_, np_, &field, angles_);
     st_.tolerance = result_.rough_cut_locus.tolerance;
     st_.rough_cut_locus = result_.rough_cut_locus.statistics;
   }
@@ -820,6 +821,7 @@ private:
   const Solver solver_;
   const Pipeline_options options_;
   const Maps maps_;
+  const Corner_angles* angles_;
   Ridge_curve<TriangleMesh, Point> result_;
   Geodesic_ridge_statistics& st_;
   Timings& timings_;
@@ -830,12 +832,13 @@ private:
 };
 
 template <class TriangleMesh, class NamedParameters>
-auto ridge_curve_impl(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, const NamedParameters& np)
+auto ridge_curve_impl(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, const NamedParameters& np,
+                      const Corner_angles* angles = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const auto solver = choose_parameter(get_parameter(np, internal_np::solver_t()), Exact_solver());
-  return Geodesic_ridge_pipeline(tm, src, np, solver, mesh_maps(tm, np)).run();
+  return Geodesic_ridge_pipeline(tm, src, np, solver, mesh_maps(tm, np), angles).run();
 }
 
 } // namespace internal

@@ -148,6 +148,8 @@ public:
   struct Options
   {
     double tolerance = default_tolerance, leaf_curvature = 0, branch_curvature = 0;
+    // the mesh's corner angles, when a batch of sources computed them once
+    const Corner_angles* corner_angles = nullptr;
   };
 
   Rough_cut_locus_builder(const TriangleMesh& tm, const Source& src, const Maps& maps, const Options& options)
@@ -252,7 +254,7 @@ private:
   bool on_boundary(vertex_descriptor v) const { return boundary_vertex_[vi(v)] != 0; }
   // Gaussian curvature at v; 0 on the border, where the angle sum measures the
   // turning of the border, not curvature
-  double curvature(vertex_descriptor v) const { return on_boundary(v) ? 0.0 : angles_.curvature(vi(v)); }
+  double curvature(vertex_descriptor v) const { return on_boundary(v) ? 0.0 : angles_->curvature(vi(v)); }
 
   // Step 1: Boost's Dijkstra on the mesh graph, several seeds for a surface point.
   void shortest_path_tree()
@@ -423,7 +425,12 @@ private:
   void share_curvature_among_faces()
   {
     if(!curvature_sums()) return;
-    angles_ = corner_angles(tm_, maps_.vpm, maps_.vim, maps_.fim);
+    if(options_.corner_angles) angles_ = options_.corner_angles;
+    else
+    {
+      own_angles_ = corner_angles(tm_, maps_.vpm, maps_.vim, maps_.fim);
+      angles_ = &own_angles_;
+    }
     curvature_share_.assign(nf_ + 1, 0.0);
     positive_share_.assign(nf_ + 1, 0.0);
     for(face_descriptor f : faces(tm_))
@@ -434,7 +441,7 @@ private:
         const std::size_t v = vi(source(h, tm_));
         // the source is no leaf of its own cut locus
         if(src_.kind == Source::ON_VERTEX && source(h, tm_) == src_.vertex) continue;
-        const double share = angles_.angle[fi(f)][k] / angles_.angle_sum[v];
+        const double share = angles_->angle[fi(f)][k] / angles_->angle_sum[v];
         curvature_share_[fi(f)] += curvature(source(h, tm_)) * share;
         positive_share_[fi(f)] += std::max(0.0, curvature(source(h, tm_))) * share;
       }
@@ -1030,7 +1037,8 @@ private:
   std::vector<std::array<std::size_t, 2> > dual_faces_of_;
   std::vector<std::array<std::size_t, 3> > dual_of_face_;
   std::vector<unsigned char> dual_degree_;
-  Corner_angles angles_;
+  Corner_angles own_angles_;
+  const Corner_angles* angles_ = nullptr;
   std::vector<double> curvature_share_, positive_share_, subtree_curvature_, subtree_positive_;
   std::vector<char> peeled_;
   std::vector<std::size_t> child_face_, peel_order_;
@@ -1059,13 +1067,15 @@ Geodesic_source<TriangleMesh> checked_source(const TriangleMesh& tm, const Sourc
 template <class TriangleMesh, class NamedParameters>
 Rough_cut_locus<TriangleMesh>
 rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
-                     const NamedParameters& np, const std::vector<double>* field = nullptr)
+                     const NamedParameters& np, const std::vector<double>* field = nullptr,
+                     const Corner_angles* angles = nullptr)
 {
   typedef Rough_cut_locus_builder<TriangleMesh, Mesh_maps_of<TriangleMesh, NamedParameters> > Builder;
   typename Builder::Options options;
   options.tolerance = get_tolerance(np);
   options.leaf_curvature = radians(get_leaf_curvature(np));
   options.branch_curvature = radians(get_branch_curvature(np));
+  options.corner_angles = angles;
   return Builder(tm, src, mesh_maps(tm, np), options).run(field);
 }
 
