@@ -527,6 +527,26 @@ GEODESIC_RIDGE_JSON_FIELDS(Repair_statistics, triangulated_polygons, non_planar_
 
 namespace {
 
+void write_json(const std::string& filename, const Json& j)
+{
+  std::ofstream os(filename);
+  if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
+  // a file name that is not UTF-8 gets U+FFFD rather than an exception
+  os << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+  os.flush();
+  if(!os) throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+}
+
+// every step the pipeline timed, stage 1's split into its own steps
+Json timings_of(const Ridge& rc, double read_seconds)
+{
+  Json timings = {{"read_and_validate", read_seconds}};
+  for(const auto& [step, seconds] : rc.timings.steps()) timings[step] = seconds;
+  for(const auto& [step, seconds] : rc.rough_cut_locus.timings.steps()) timings["rough_cut_locus." + step] = seconds;
+  timings["total"] = read_seconds + rc.timings.total();
+  return timings;
+}
+
 void write_stats(const std::string& filename, const Options& o, const Ridge& rc, const Mesh& mesh,
                  const File_map& map, const Component_map* cc, double read_seconds,
                  const Geodesic_ridge::Refined_mesh_statistics* refined)
@@ -551,18 +571,8 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
             {"ridge", {{"polylines", rc.polylines.size()}, {"cone_polylines", rc.cone_polylines.size()}}},
             {"statistics", rc.statistics}};
   if(refined) j["refined_mesh"] = *refined;
-  // every step the pipeline timed, stage 1's split into its own steps
-  Json timings = {{"read_and_validate", read_seconds}};
-  for(const auto& [step, seconds] : rc.timings.steps()) timings[step] = seconds;
-  for(const auto& [step, seconds] : r.timings.steps()) timings["rough_cut_locus." + step] = seconds;
-  timings["total"] = read_seconds + rc.timings.total();
-  j["timings_seconds"] = timings;
-  std::ofstream os(filename);
-  if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
-  // a file name that is not UTF-8 gets U+FFFD rather than an exception
-  os << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
-  os.flush();
-  if(!os) throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+  j["timings_seconds"] = timings_of(rc, read_seconds);
+  write_json(filename, j);
 }
 
 // The mesh vertex of the file's source vertex, said on stderr when the repair
@@ -986,15 +996,8 @@ void write_batch_stats(const std::string& filename, const Options& o, const Batc
                             {"solver", o.solver}, {"repair", o.repair}}},
             {"ridge", {{"polylines", rc.polylines.size()}}},
             {"statistics", rc.statistics}};
-  Json timings;
-  for(const auto& [step, seconds] : rc.timings.steps()) timings[step] = seconds;
-  timings["total"] = rc.timings.total();
-  j["timings_seconds"] = timings;
-  std::ofstream os(filename);
-  if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
-  os << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
-  os.flush();
-  if(!os) throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+  j["timings_seconds"] = timings_of(rc, 0);
+  write_json(filename, j);
 }
 
 // Many sources: grouped by connected component (each group one batch, the

@@ -2,13 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Graph distances: Boost.Graph's Dijkstra on the mesh's edges. The cheapest
-// solver and the crudest: a path along edges is longer than the geodesic by up
-// to about 8 % on regular meshes, and the excess depends on the direction
-// (staircase paths), so the field's gradient is noisy. A baseline.
+// solver and the crudest: a path along edges is longer than the geodesic, by
+// an excess that depends on the direction (staircase paths), so the field's
+// gradient is noisy. A baseline.
 #ifndef GEODESIC_RIDGE_SOLVERS_DIJKSTRA_SOLVER_H
 #define GEODESIC_RIDGE_SOLVERS_DIJKSTRA_SOLVER_H
 
 #include <Geodesic_ridge/internal/mesh_maps.h>
+#include <Geodesic_ridge/internal/solver_from_source.h>
 #include <Geodesic_ridge/source.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -29,41 +30,20 @@ namespace Geodesic_ridge {
 /// \ingroup PkgGeodesicRidgeSolvers
 /// Model of `GeodesicSolver`: shortest paths along the edges of the mesh
 /// (Boost.Graph's Dijkstra, edge lengths from the vertex point map). An upper
-/// bound of the geodesic distance, too long by up to about 8 % on regular
-/// meshes and by a direction-dependent amount elsewhere: a baseline for the
-/// accuracy tables, not a solver for precise ridges.
-struct Dijkstra_solver
+/// bound of the geodesic distance, too long by a direction-dependent amount
+/// (on average 7.5-13 % on the test meshes, `test_solvers.cpp`): a baseline
+/// for the accuracy tables, not a solver for precise ridges.
+/// A point source's corners start at their straight-line distances from it.
+struct Dijkstra_solver : internal::Solver_from_source<Dijkstra_solver>
 {
   /// "dijkstra"
   static const char* name() { return "dijkstra"; }
 
-  /// Distances from vertex `s` of `tm` to every vertex, written to `distance`
-  /// (infinity where unreachable), on the geometry of the named parameter
-  /// `vertex_point_map` (default: the mesh's own points).
-  template <class TriangleMesh, class VertexDistanceMap,
-            class NamedParameters = CGAL::parameters::Default_named_parameters>
-  void operator()(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor s,
-                  VertexDistanceMap distance, const NamedParameters& np = CGAL::parameters::default_values()) const
-  {
-    run(tm, make_source(tm, s, np).seeds, distance, np);
-  }
-
-  /// Distances from the point `loc` (face + barycentric coordinates, CGAL's
-  /// order): the corners of the faces that hold it start at their
-  /// straight-line distances, then the paths follow edges.
-  template <class TriangleMesh, class FT, class VertexDistanceMap,
-            class NamedParameters = CGAL::parameters::Default_named_parameters>
-  void operator()(const TriangleMesh& tm,
-                  const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
-                                  std::array<FT, 3> >& loc,
-                  VertexDistanceMap distance, const NamedParameters& np = CGAL::parameters::default_values()) const
-  {
-    run(tm, make_source(tm, loc, np).seeds, distance, np);
-  }
-
 private:
-  template <class TriangleMesh, class Seeds, class VertexDistanceMap, class NamedParameters>
-  static void run(const TriangleMesh& tm, const Seeds& seeds, VertexDistanceMap distance, const NamedParameters& np)
+  friend struct internal::Solver_from_source<Dijkstra_solver>;
+  template <class TriangleMesh, class VertexDistanceMap, class NamedParameters>
+  static void run(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, VertexDistanceMap distance,
+                  const NamedParameters& np)
   {
     typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
     const auto maps = internal::mesh_maps(tm, np);
@@ -75,7 +55,7 @@ private:
     std::vector<vertex_descriptor> parent(num_vertices(tm));
     for(auto v : vertices(tm)) parent[get(maps.vim, v)] = v;
     std::vector<vertex_descriptor> roots;
-    for(const auto& s : seeds)
+    for(const auto& s : src.seeds)
     {
       double& ds = d[get(maps.vim, s.first)];
       if(s.second < ds) ds = s.second;

@@ -9,6 +9,7 @@
 #define GEODESIC_RIDGE_SOLVERS_FAST_MARCHING_SOLVER_H
 
 #include <Geodesic_ridge/internal/mesh_maps.h>
+#include <Geodesic_ridge/internal/solver_from_source.h>
 #include <Geodesic_ridge/source.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -130,44 +131,21 @@ void fast_marching_distances(const TriangleMesh& tm, const VertexPointMap& vpm, 
 /// (obtuse triangles are not unfolded). Much cheaper than the exact solver; errors of the order of the
 /// edge length near the source. The pipeline uses it to shape the tree of
 /// stage 1 (only the direction of descent matters there).
-struct Fast_marching_solver
+/// A point source's corners start at their straight-line distances from it.
+struct Fast_marching_solver : internal::Solver_from_source<Fast_marching_solver>
 {
   /// "fmm"
   static const char* name() { return "fmm"; }
 
-  /// Distances from vertex `s` of `tm` to every vertex, written to `distance`
-  /// (infinity where unreachable), on the geometry of the named parameter
-  /// `vertex_point_map` (default: the mesh's own points).
-  template <class TriangleMesh, class VertexDistanceMap,
-            class NamedParameters = CGAL::parameters::Default_named_parameters>
-  void operator()(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor s,
-                  VertexDistanceMap distance, const NamedParameters& np = CGAL::parameters::default_values()) const
-  {
-    run(tm, make_source(tm, s, np).seeds, distance, np);
-  }
-
-  /// Distances from the point `loc` (face + barycentric coordinates, CGAL's
-  /// order): the vertices of the faces that hold it start at their
-  /// straight-line distances.
-  template <class TriangleMesh, class FT, class VertexDistanceMap,
-            class NamedParameters = CGAL::parameters::Default_named_parameters>
-  void operator()(const TriangleMesh& tm,
-                  const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
-                                  std::array<FT, 3> >& loc,
-                  VertexDistanceMap distance, const NamedParameters& np = CGAL::parameters::default_values()) const
-  {
-    // the corners start at their straight-line distances from the point (a
-    // point on an edge or at a vertex seeds that feature's neighbourhood)
-    run(tm, make_source(tm, loc, np).seeds, distance, np);
-  }
-
 private:
-  template <class TriangleMesh, class Seeds, class VertexDistanceMap, class NamedParameters>
-  static void run(const TriangleMesh& tm, const Seeds& seeds, VertexDistanceMap distance, const NamedParameters& np)
+  friend struct internal::Solver_from_source<Fast_marching_solver>;
+  template <class TriangleMesh, class VertexDistanceMap, class NamedParameters>
+  static void run(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, VertexDistanceMap distance,
+                  const NamedParameters& np)
   {
     const auto maps = internal::mesh_maps(tm, np);
     std::vector<double> d;
-    internal::fast_marching_distances(tm, maps.vpm, maps.vim, seeds, d);
+    internal::fast_marching_distances(tm, maps.vpm, maps.vim, src.seeds, d);
     for(auto v : vertices(tm)) put(distance, v, d[get(maps.vim, v)]);
   }
 };

@@ -11,6 +11,7 @@
 
 #include <Geodesic_ridge/exceptions.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
+#include <Geodesic_ridge/internal/solver_from_source.h>
 #include <Geodesic_ridge/source.h>
 
 #include <CGAL/config.h>
@@ -49,7 +50,7 @@ namespace Geodesic_ridge {
 /// the method's own error: we would rather say so than blur it silently).
 /// A failed sparse factorization throws `Algorithm_error`.
 template <class Mode = CGAL::Heat_method_3::Direct>
-struct Heat_method_solver
+struct Heat_method_solver : internal::Solver_from_source<Heat_method_solver<Mode> >
 {
   static_assert(std::is_same<Mode, CGAL::Heat_method_3::Direct>::value ||
                     std::is_same<Mode, CGAL::Heat_method_3::Intrinsic_Delaunay>::value,
@@ -61,29 +62,8 @@ struct Heat_method_solver
     return std::is_same<Mode, CGAL::Heat_method_3::Direct>::value ? "heat" : "heat-idt";
   }
 
-  /// Distances from vertex `s` of `tm` to every vertex, written to `distance`,
-  /// on the geometry of the named parameter `vertex_point_map` (default: the
-  /// mesh's own points).
-  template <class TriangleMesh, class VertexDistanceMap,
-            class NamedParameters = CGAL::parameters::Default_named_parameters>
-  void operator()(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor s,
-                  VertexDistanceMap distance, const NamedParameters& np = CGAL::parameters::default_values()) const
-  {
-    run(tm, make_source(tm, s, np), distance, np);
-  }
-
-  /// Distances from the point `loc`: only a point at a vertex (one coordinate 1).
-  template <class TriangleMesh, class FT, class VertexDistanceMap,
-            class NamedParameters = CGAL::parameters::Default_named_parameters>
-  void operator()(const TriangleMesh& tm,
-                  const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
-                                  std::array<FT, 3> >& loc,
-                  VertexDistanceMap distance, const NamedParameters& np = CGAL::parameters::default_values()) const
-  {
-    run(tm, make_source(tm, loc, np), distance, np);
-  }
-
 private:
+  friend struct internal::Solver_from_source<Heat_method_solver<Mode> >;
   template <class TriangleMesh, class VertexDistanceMap, class NamedParameters>
   static void run(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, VertexDistanceMap distance,
                   const NamedParameters& np)
