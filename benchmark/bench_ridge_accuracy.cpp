@@ -7,7 +7,7 @@
 //
 //   bench_ridge_accuracy [--max-faces N] [--tolerance T] [--recall-tolerance T]
 //                        [--sources-per-mesh N] [--random-sources R] [--seed S]
-//                        [--solver exact|fmm|cone|heat|heat-idt|dijkstra|both|exact+cone|approximate] [--diagnose] [--no-reference] [--source-vertex V]...
+//                        [--solver exact|vtp|fmm|cone|heat|heat-idt|dijkstra|both|exact+cone|exact+vtp|approximate] [--diagnose] [--no-reference] [--source-vertex V]...
 //                        [--spacing S] [--min-jump DEG] [--outliers] [--hole R] [--repair]
 //                        [pipeline options] [MESH ...]
 //
@@ -19,6 +19,8 @@
 // in parts): each is read with the repair (`parameters::repair(true)`) and, if
 // it is in several parts, measured on its largest (the name gets "_part").
 //
+// Solver vtp: our exact window propagation (Window_propagation_solver), with
+// the exact checks of --diagnose ('exact+vtp' runs both exact solvers).
 // Solvers heat, heat-idt and dijkstra are the baselines (issue 14); the heat
 // method runs from the vertex sources only ('approximate' runs fmm and the
 // three).
@@ -67,6 +69,7 @@
 #include <Geodesic_ridge/connected_component.h>
 #include <Geodesic_ridge/solvers/Dijkstra_solver.h>
 #include <Geodesic_ridge/solvers/Heat_method_solver.h>
+#include <Geodesic_ridge/solvers/Window_propagation_solver.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -206,8 +209,9 @@ int main(int argc, char** argv)
       const std::string s = argv[++i];
       if(s == "both") solvers = {"exact", "fmm"};
       else if(s == "exact+cone") solvers = {"exact", "cone"};
+      else if(s == "exact+vtp") solvers = {"exact", "vtp"};
       else if(s == "approximate") solvers = {"fmm", "heat", "heat-idt", "dijkstra"};
-      else if(s == "exact" || s == "fmm" || s == "cone" || s == "heat" || s == "heat-idt" || s == "dijkstra")
+      else if(s == "exact" || s == "vtp" || s == "fmm" || s == "cone" || s == "heat" || s == "heat-idt" || s == "dijkstra")
         solvers = {s};
       else { std::cerr << "unknown solver " << s << "\n"; return 2; }
     }
@@ -303,6 +307,8 @@ int main(int argc, char** argv)
                                    : Geodesic_ridge::compute_ridge_curve(mesh, src.location, np);
             };
             if(solver == "fmm") return compute(p::solver(Geodesic_ridge::Fast_marching_solver(), options.parameters(t)));
+            if(solver == "vtp")
+              return compute(p::solver(Geodesic_ridge::Window_propagation_solver(), options.parameters(t)));
             if(solver == "heat") return compute(p::solver(Geodesic_ridge::Heat_method_solver<>(), options.parameters(t)));
             if(solver == "heat-idt")
               return compute(p::solver(Geodesic_ridge::Heat_method_idt_solver(), options.parameters(t)));
@@ -350,7 +356,7 @@ int main(int argc, char** argv)
           if(diagnose)
           {
             r.diagnosed = true;
-            const bool exact = solver == "exact" || solver == "cone";
+            const bool exact = solver == "exact" || solver == "cone" || solver == "vtp";
             const GT::Extension_check check =
                 exact ? GT::check_extension(mesh, rc, exact_on_mesh, 1e-9)
                       : GT::check_extension(mesh, rc, on_mesh_of(false), fmm_tolerance, fmm_skip_rings);

@@ -4,7 +4,7 @@
 // geodesic_ridge: the package's command-line program (DESIGN.md §8).
 //
 //   geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z) [--repair]
-//                  [--tolerance T] [--solver exact|fmm|heat|heat-idt|dijkstra] [--ridge OUT.polylines.txt]
+//                  [--tolerance T] [--solver exact|vtp|fmm|heat|heat-idt|dijkstra] [--ridge OUT.polylines.txt]
 //                  [--ridge-locations OUT.txt] [--rough-cut OUT.polylines.txt]
 //                  [--refined OUT.ply [--ply-ascii]]
 //                  [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]
@@ -31,6 +31,7 @@
 #include <Geodesic_ridge/refined_mesh.h>
 #include <Geodesic_ridge/solvers/Dijkstra_solver.h>
 #include <Geodesic_ridge/solvers/Heat_method_solver.h>
+#include <Geodesic_ridge/solvers/Window_propagation_solver.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -86,7 +87,7 @@ struct Usage_error : std::runtime_error
 
 const char* synopsis =
     "usage: geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z) [--repair]\n"
-    "                      [--tolerance T] [--solver exact|fmm|heat|heat-idt|dijkstra] [--ridge OUT.polylines.txt]\n"
+    "                      [--tolerance T] [--solver exact|vtp|fmm|heat|heat-idt|dijkstra] [--ridge OUT.polylines.txt]\n"
     "                      [--ridge-locations OUT.txt] [--rough-cut OUT.polylines.txt]\n"
     "                      [--refined OUT.ply [--ply-ascii]]\n"
     "                      [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]\n"
@@ -192,7 +193,8 @@ po::options_description describe()
                                   "is split becomes the copy with the largest incident area")
     ("tolerance", text("T"), "significance tolerance in [0, 0.5) (default 0.025)")
     ("solver", text("NAME"), "geodesic solver on the extended surface: exact (CGAL Surface_mesh_shortest_path, "
-                             "default), fmm (fast marching, first order), heat or heat-idt (CGAL's heat method on "
+                             "default), vtp (exact too: our window propagation, faster and leaner on large "
+                             "meshes), fmm (fast marching, first order), heat or heat-idt (CGAL's heat method on "
                              "the mesh or on its intrinsic Delaunay triangulation; vertex sources only) or dijkstra "
                              "(paths along edges; a baseline)")
     ("ridge", text("OUT"), "write the ridge curve as CGAL polylines (n x1 y1 z1 ... per line)")
@@ -303,10 +305,10 @@ void read_values(const po::variables_map& vm, Options& o)
     throw Geodesic_ridge::Invalid_parameter_error("unknown field '" + field + "': linear or cone");
   o.field = field == "cone" ? Geodesic_ridge::Field::cone : Geodesic_ridge::Field::linear;
   if(vm.count("solver")) o.solver = text(vm, "solver");
-  if(o.solver != "exact" && o.solver != "fmm" && o.solver != "heat" && o.solver != "heat-idt" &&
-     o.solver != "dijkstra")
+  if(o.solver != "exact" && o.solver != "vtp" && o.solver != "fmm" && o.solver != "heat" &&
+     o.solver != "heat-idt" && o.solver != "dijkstra")
     throw Geodesic_ridge::Invalid_parameter_error("unknown solver '" + o.solver +
-                                                  "': exact, fmm, heat, heat-idt or dijkstra");
+                                                  "': exact, vtp, fmm, heat, heat-idt or dijkstra");
 }
 
 // The options, checked. The tolerance's range is the library's to check: it
@@ -670,6 +672,7 @@ auto with_parameters(const Options& o, const F& f)
   namespace p = Geodesic_ridge::parameters;
   auto with = [&](const auto& solver) { return f(p::tolerance(o.tolerance, p::solver(solver))); };
   if(o.solver == "fmm") return with(Geodesic_ridge::Fast_marching_solver());
+  if(o.solver == "vtp") return with(Geodesic_ridge::Window_propagation_solver());
   if(o.solver == "heat") return with(Geodesic_ridge::Heat_method_solver<>());
   if(o.solver == "heat-idt") return with(Geodesic_ridge::Heat_method_idt_solver());
   if(o.solver == "dijkstra") return with(Geodesic_ridge::Dijkstra_solver());

@@ -23,6 +23,7 @@
 #include <Geodesic_ridge/solvers/Exact_solver.h>
 #include <Geodesic_ridge/solvers/Fast_marching_solver.h>
 #include <Geodesic_ridge/solvers/Dijkstra_solver.h>
+#include <Geodesic_ridge/solvers/Window_propagation_solver.h>
 #ifdef CGAL_EIGEN3_ENABLED // the heat method needs Eigen
 #include <Geodesic_ridge/solvers/Heat_method_solver.h>
 #endif

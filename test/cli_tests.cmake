@@ -42,7 +42,7 @@ cli_failure(tolerance_negative    "out of range" ${CLI} ${D}/torus_1k.off --sour
 cli_failure(tolerance_not_number  "tolerance 'x1' is not a finite number" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance x1)
 cli_failure(tolerance_nan         "tolerance 'nan' is not a finite number" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance nan)
 cli_failure(unwritable_output     "cannot open" ${CLI} ${D}/torus_1k.off --source-vertex 0 --rough-cut /nonexistent-dir/x.txt)
-cli_failure(unknown_solver        "unknown solver 'vtp'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver vtp)
+cli_failure(unknown_solver        "unknown solver 'mmp'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver mmp)
 cli_failure(sources_without_dir   "--sources and --out-dir go together" ${CLI} ${D}/torus_1k.off --sources ${B}/queries_torus_1k_points.txt)
 cli_failure(sources_and_source    "give --sources or one source, not both" ${CLI} ${D}/torus_1k.off --source-vertex 0
             --sources ${B}/queries_torus_1k_points.txt --out-dir ${CMAKE_CURRENT_BINARY_DIR}/cli_out/never)
@@ -74,7 +74,7 @@ add_test(NAME cli.rough_cut.torus_1k_source_point
                  "-DSOURCE=--source-point;0;1.3573468999999998;0.7423328699999999;1.4680988666666668" -DOUT=${OUTDIR} -DGENUS=1
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
 # the approximate solvers on the extended surface: the same checks
-foreach(solver fmm heat heat-idt dijkstra)
+foreach(solver vtp fmm heat heat-idt dijkstra)
   foreach(mesh_genus bunny_1k:0 eight:2)
     string(REPLACE ":" ";" mg ${mesh_genus})
     list(GET mg 0 mesh)
@@ -88,7 +88,7 @@ endforeach()
 
 # The region-wise field: queries, refined mesh, iso-lines, ridge locations,
 # with both solvers; and bad query files.
-foreach(solver exact fmm)
+foreach(solver exact vtp fmm)
   add_test(NAME cli.field.${solver}
            COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off -DDATA=${B} -DOUT=${OUTDIR}/${solver}
                    "-DEXTRA=--solver;${solver}" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_field_outputs.cmake)
@@ -96,6 +96,7 @@ endforeach()
 add_test(NAME cli.field.cone
          COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off -DDATA=${B} -DOUT=${OUTDIR}/cone
                  "-DEXTRA=--field;cone" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_field_outputs.cmake)
+cli_failure(cone_with_vtp         "the cone field needs the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver vtp --field cone)
 cli_failure(cone_with_fmm         "the cone field needs the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --field cone)
 cli_failure(unknown_field         "unknown field 'planar'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field planar)
 set(Q ${D}/torus_1k.off --source-vertex 0 --query-out ${OUTDIR}/q.txt --query)

@@ -20,6 +20,7 @@
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 #include <Geodesic_ridge/solvers/Dijkstra_solver.h>
 #include <Geodesic_ridge/solvers/Heat_method_solver.h>
+#include <Geodesic_ridge/solvers/Window_propagation_solver.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -1072,6 +1073,7 @@ void check_solver_drives_the_pipeline(const Solver& solver, const Solver_bounds&
 TEST_CASE("every solver drives the pipeline: the square, tori, a tolerance sweep", "[ridge_curve][solvers]")
 {
   SECTION("fast marching") { check_solver_drives_the_pipeline(Geodesic_ridge::Fast_marching_solver(), {0.3, 0.3}); }
+  SECTION("window propagation") { check_solver_drives_the_pipeline(Geodesic_ridge::Window_propagation_solver(), {0.3, 0.3}); }
   SECTION("heat") { check_solver_drives_the_pipeline(Geodesic_ridge::Heat_method_solver<>(), {0.5, 0.5}); }
   SECTION("heat-idt") { check_solver_drives_the_pipeline(Geodesic_ridge::Heat_method_idt_solver(), {0.5, 0.5}); }
   SECTION("dijkstra") { check_solver_drives_the_pipeline(Geodesic_ridge::Dijkstra_solver(), {2.5, 2.5}); }

@@ -9,7 +9,9 @@
 //  * meshes with a boundary (an extended surface), and the pipeline's
 //    schedules that use fast marching (the tree of stage 1, the extension);
 //  * the baselines: Dijkstra on the edges (an upper bound of the exact
-//    distance) and the heat method (smooth, a few per cent off).
+//    distance) and the heat method (smooth, a few per cent off);
+//  * our exact window propagation against CGAL's exact solver, on every mesh
+//    of data/ and on crafted hard cases, from vertices, edges and faces.
 #include "support/analytic_meshes.h"
 
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
@@ -19,6 +21,9 @@
 #include <Geodesic_ridge/solvers/Dijkstra_solver.h>
 #include <Geodesic_ridge/solvers/Fast_marching_solver.h>
 #include <Geodesic_ridge/solvers/Heat_method_solver.h>
+#include <Geodesic_ridge/solvers/Window_propagation_solver.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <CGAL/convex_hull_3.h>
 
@@ -247,6 +252,9 @@ TEST_CASE("every solver against great-circle distances on a sphere with obtuse a
   const auto heat = great_circle_error(distances_from(m, s, Geodesic_ridge::Heat_method_solver<>()));
   const auto idt = great_circle_error(distances_from(m, s, Geodesic_ridge::Heat_method_idt_solver()));
   const auto dijkstra = great_circle_error(distances_from(m, s, Geodesic_ridge::Dijkstra_solver()));
+  const auto vtp = great_circle_error(distances_from(m, s, Geodesic_ridge::Window_propagation_solver()));
+  CHECK(std::abs(vtp.first - exact.first) <= 1e-9);
+  CHECK(std::abs(vtp.second - exact.second) <= 1e-9);
   std::cout << "[solvers] sphere, seed " << seed << ", " << m.number_of_faces() << " faces, " << obtuse
             << " obtuse corners, " << slivers << " slivers; mean / worst relative error against the great circle: exact "
             << exact.first << " / " << exact.second << ", fmm " << fmm.first << " / " << fmm.second << ", heat "
@@ -489,4 +497,192 @@ TEST_CASE("a batch of sources gives what single calls give, serially and in para
   std::vector<std::vector<std::vector<Point_3> > > none;
   Geodesic_ridge::compute_geodesic_ridges(m, std::vector<vertex_descriptor>(), std::back_inserter(none));
   CHECK(none.empty());
+}
+
+namespace {
+
+// The window-propagation solver's distances against the exact solver's on
+// mesh m, from vertices 0, V/3 and 2V/3, a point inside a face, a point on
+// an edge and a Face_location at a vertex (seeded): every vertex within 1e-9
+// relative (absolute in mean edges near the source), the same unreachable
+// vertices. Returns the worst relative difference.
+double check_window_propagation(const Mesh& m, const std::string& what, unsigned seed)
+{
+  typedef std::pair<face_descriptor, std::array<double, 3> > Location;
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.05, 1.0);
+  const std::size_t nv = m.number_of_vertices(), nf = m.number_of_faces();
+  const face_descriptor f1(static_cast<Mesh::size_type>(random() % nf)), f2(static_cast<Mesh::size_type>(random() % nf));
+  const double a = unit(random), b = unit(random), c = unit(random), t = 0.1 + 0.8 * (unit(random) - 0.05) / 0.95;
+  const std::vector<Location> points = {{f1, {{a / (a + b + c), b / (a + b + c), c / (a + b + c)}}},
+                                        {f2, {{0., t, 1 - t}}},
+                                        {f2, {{1., 0., 0.}}}};
+  const double h = mean_edge_length(m);
+  double worst = 0;
+  auto compare = [&](const std::vector<double>& vtp, const std::vector<double>& exact, const std::string& source) {
+    INFO(what << ", source " << source << ", seed " << seed);
+    std::size_t bad = 0, unreachable = 0;
+    for(vertex_descriptor v : m.vertices())
+    {
+      if(!std::isfinite(exact[v]))
+      {
+        ++unreachable;
+        bad += std::isfinite(vtp[v]);
+        continue;
+      }
+      const double difference = std::abs(vtp[v] - exact[v]) / std::max(exact[v], h);
+      worst = std::max(worst, difference);
+      bad += !(difference <= 1e-9);
+    }
+    CHECK(bad == 0);
+  };
+  for(std::size_t i : {std::size_t(0), nv / 3, 2 * nv / 3})
+  {
+    const vertex_descriptor s(static_cast<Mesh::size_type>(i));
+    compare(distances_from(m, s, Geodesic_ridge::Window_propagation_solver()),
+            distances_from(m, s, Geodesic_ridge::Exact_solver()), "vertex " + std::to_string(i));
+  }
+  const char* kinds[] = {"inside face ", "on an edge of face ", "at a corner of face "};
+  for(std::size_t k = 0; k < points.size(); ++k)
+    compare(distances_from(m, points[k], Geodesic_ridge::Window_propagation_solver()),
+            distances_from(m, points[k], Geodesic_ridge::Exact_solver()),
+            kinds[k] + std::to_string(std::size_t(points[k].first)));
+  std::cout << "[solvers] vtp against the exact solver, " << what << " (seed " << seed
+            << "): worst relative difference " << worst << "\n";
+  return worst;
+}
+
+} // namespace
+
+TEST_CASE("window propagation gives the exact solver's distances on every mesh of data/", "[solvers][vtp]")
+{
+  const unsigned seed = test_seed(20261204);
+  for(const char* name : {"torus_1k.off", "eight.off", "bunny_1k.off", "knot_3k.off", "teddy_3k.off",
+                          "armadillo_2k.off", "3holes_7k.off", "boundary/open_box.off", "boundary/flat_annulus.off"})
+    check_window_propagation(load(name), name, seed);
+}
+
+TEST_CASE("window propagation on hard cases: holes and pinched vertices, corners, saddles, slivers", "[solvers][vtp]")
+{
+  const unsigned seed = test_seed(20261205);
+  SECTION("a mesh with many holes, some vertices pinched between them")
+  {
+    Mesh m = load("bunny_1k.off");
+    std::vector<face_descriptor> removed;
+    for(face_descriptor f : m.faces())
+      if(std::size_t(f) % 5 == 3) removed.push_back(f);
+    for(face_descriptor f : removed) CGAL::Euler::remove_face(m.halfedge(f), m);
+    m.collect_garbage();
+    check_window_propagation(m, "bunny_1k without every fifth face", seed);
+  }
+  SECTION("convex polyhedra: cone corners, flat vertices on faces and edges")
+  {
+    check_window_propagation(make_subdivided_polyhedron(box_corners_and_faces(1, 2, 3), 5, 0.2, seed).mesh,
+                             "box 1 x 2 x 3, n 5, perturbed", seed);
+    check_window_propagation(make_subdivided_polyhedron(regular_tetrahedron_corners_and_faces(), 6).mesh,
+                             "regular tetrahedron, n 6", seed);
+  }
+  SECTION("valence-3 vertices: every other face split at a raised or sunk centre")
+  {
+    Mesh m = load("torus_1k.off");
+    std::vector<face_descriptor> split;
+    for(face_descriptor f : m.faces())
+      if(std::size_t(f) % 2 == 0) split.push_back(f);
+    for(face_descriptor f : split)
+    {
+      const auto h = m.halfedge(f);
+      const Point_3 p[3] = {m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h)))};
+      const Vector_3 n = CGAL::unit_normal(p[0], p[1], p[2]);
+      const double lift = (std::size_t(f) % 4 == 0 ? 0.3 : -0.3) * std::sqrt(CGAL::squared_distance(p[0], p[1]));
+      const auto g = CGAL::Euler::add_center_vertex(h, m);
+      m.point(m.target(g)) = CGAL::centroid(p[0], p[1], p[2]) + lift * n;
+    }
+    check_window_propagation(m, "torus_1k with raised and sunk valence-3 centres", seed);
+  }
+  SECTION("needles and caps: the convex hull of random points on a sphere")
+  {
+    std::mt19937 random(seed);
+    std::normal_distribution<double> normal;
+    std::vector<Point_3> points;
+    for(int i = 0; i < 1500; ++i)
+    {
+      const Vector_3 v(normal(random), normal(random), normal(random));
+      points.push_back(CGAL::ORIGIN + v / std::sqrt(v.squared_length()));
+    }
+    Mesh m;
+    CGAL::convex_hull_3(points.begin(), points.end(), m);
+    check_window_propagation(m, "sphere hull of 1500 random points", seed);
+  }
+  SECTION("the doubly covered square from a point on an edge: the mirror images")
+  {
+    const Doubly_covered_square sq = make_doubly_covered_square(12, 0.25, seed);
+    const face_descriptor f(40);
+    REQUIRE(!sq.bottom_face[f]);
+    const auto h = sq.mesh.halfedge(f);
+    const Point_3 p0 = sq.mesh.point(sq.mesh.source(h)), p1 = sq.mesh.point(sq.mesh.target(h));
+    const std::array<double, 3> w = {{0.35, 0.65, 0.}};
+    const Doubly_covered_square_oracle oracle(w[0] * p0.x() + w[1] * p1.x(), w[0] * p0.y() + w[1] * p1.y());
+    const std::vector<double> d =
+        distances_from(sq.mesh, std::make_pair(f, w), Geodesic_ridge::Window_propagation_solver());
+    double worst = 0;
+    for(vertex_descriptor v : sq.mesh.vertices())
+      if(std::find(sq.top.begin(), sq.top.end(), v) == sq.top.end())
+        worst = std::max(worst, std::abs(d[v] - oracle.bottom_distance({{sq.mesh.point(v).x(), sq.mesh.point(v).y()}})));
+    INFO("seed " << seed);
+    CHECK(worst <= 1e-9);
+  }
+}
+
+namespace {
+
+// The exact solver as the pipeline sees the window-propagation solver: exact
+// distances, no cones (so no kink split).
+struct Exact_solver_without_cones
+{
+  static const char* name() { return "exact-without-cones"; }
+  static constexpr bool is_exact = true;
+  static constexpr bool has_cones = false;
+  template <class... Args>
+  void operator()(Args&&... args) const
+  {
+    Geodesic_ridge::Exact_solver()(std::forward<Args>(args)...);
+  }
+};
+
+} // namespace
+
+TEST_CASE("window propagation drives the pipeline like the exact solver", "[solvers][vtp][ridge_curve]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  // without the kink split (which reads the exact solver's cones), the two
+  // exact solvers grow the same E and give the same ridge
+  static_assert(Geodesic_ridge::Geodesic_solver_traits<Geodesic_ridge::Window_propagation_solver>::is_exact);
+  static_assert(!Geodesic_ridge::Geodesic_solver_traits<Geodesic_ridge::Window_propagation_solver>::has_cones);
+  static_assert(Geodesic_ridge::Geodesic_solver_traits<Geodesic_ridge::Exact_solver>::has_cones);
+  for(const char* name : {"torus_1k.off", "bunny_1k.off", "eight.off"})
+  {
+    const Mesh m = load(name);
+    for(vertex_descriptor s : {vertex_descriptor(0), vertex_descriptor(static_cast<Mesh::size_type>(m.number_of_vertices() / 2))})
+    {
+      INFO(name << " source " << std::size_t(s));
+      const auto exact = Geodesic_ridge::compute_ridge_curve(m, s, p::solver(Exact_solver_without_cones()));
+      const auto vtp = Geodesic_ridge::compute_ridge_curve(m, s, p::solver(Geodesic_ridge::Window_propagation_solver()));
+      CHECK(vtp.statistics.solver == std::string("vtp"));
+      CHECK(vtp.statistics.extended_surface.number_of_faces == exact.statistics.extended_surface.number_of_faces);
+      CHECK(vtp.statistics.solves == exact.statistics.solves);
+      CHECK(vtp.polylines.size() == exact.polylines.size());
+      double length_exact = 0, length_vtp = 0;
+      for(const auto& pl : exact.polylines)
+        for(std::size_t i = 1; i < pl.size(); ++i) length_exact += std::sqrt(CGAL::squared_distance(pl[i - 1].point, pl[i].point));
+      for(const auto& pl : vtp.polylines)
+        for(std::size_t i = 1; i < pl.size(); ++i) length_vtp += std::sqrt(CGAL::squared_distance(pl[i - 1].point, pl[i].point));
+      CHECK(length_vtp == Approx(length_exact).epsilon(1e-6));
+    }
+  }
+  // the cone field needs cones
+  const Mesh m = load("torus_1k.off");
+  CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0),
+                                                      p::field(Geodesic_ridge::Field::cone,
+                                                               p::solver(Geodesic_ridge::Window_propagation_solver()))),
+                  Geodesic_ridge::Invalid_parameter_error);
 }

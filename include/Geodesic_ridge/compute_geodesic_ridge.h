@@ -390,13 +390,13 @@ template <class Point, class Solver, class Wanted>
 void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vector<double>& distance,
               std::vector<Face_cone>& cones, const Wanted& wanted, const std::vector<std::array<double, 3> >& samples)
 {
-  if constexpr(Geodesic_solver_traits<std::decay_t<Solver> >::is_exact)
+  if constexpr(Geodesic_solver_traits<std::decay_t<Solver> >::has_cones)
   {
     if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance), cones, wanted, samples);
     else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), cones, wanted, samples);
   }
   else
-    throw Invalid_parameter_error(std::string("the cone field needs the exact solver, not '") + solver.name() + "'");
+    throw Invalid_parameter_error(std::string("the cone field needs a solver with cones (the exact solver), not '") + solver.name() + "'");
 }
 
 // Fast marching over E from the corners of its first `anchor.size()` copies,
@@ -666,8 +666,8 @@ Pipeline_options pipeline_options(const NamedParameters& np, const Solver& solve
   o.maximum_rings = choose_parameter(get_parameter(np, internal_np::maximum_rings_t()), default_maximum_rings);
   o.maximum_solves = choose_parameter(get_parameter(np, internal_np::maximum_solves_t()), default_maximum_solves);
   o.field = choose_parameter(get_parameter(np, internal_np::field_t()), Field::linear);
-  if(o.field == Field::cone && !Geodesic_solver_traits<std::decay_t<Solver> >::is_exact)
-    throw Invalid_parameter_error(std::string("the cone field needs the exact solver, not '") + solver.name() + "'");
+  if(o.field == Field::cone && !Geodesic_solver_traits<std::decay_t<Solver> >::has_cones)
+    throw Invalid_parameter_error(std::string("the cone field needs a solver with cones (the exact solver), not '") + solver.name() + "'");
   o.cone_ridge_tolerance = get_number_in_range<internal_np::cone_ridge_tolerance_t>(
       np, default_cone_ridge_tolerance, std::numeric_limits<double>::min(), 1, false, "cone ridge tolerance", "(0, 1]");
   o.tree_from_solver = choose_parameter(get_parameter(np, internal_np::tree_from_solver_t()), false);
@@ -689,7 +689,7 @@ class Geodesic_ridge_pipeline
   typedef typename Maps::Vertex_point_map VertexPointMap;
   typedef typename Maps::Face_index_map FaceIndexMap;
   typedef Extended_surface_builder<TriangleMesh, Maps> Builder;
-  static constexpr bool solver_is_exact = Geodesic_solver_traits<std::decay_t<Solver> >::is_exact;
+  static constexpr bool solver_has_cones = Geodesic_solver_traits<std::decay_t<Solver> >::has_cones;
 
 public:
   // `angles`: the mesh's corner angles, if a batch of sources computed them once
@@ -777,7 +777,7 @@ private:
         for(std::size_t i = 0; i < samples; ++i) result_.cones[f].push_back(copy_cones_[samples * c + i]);
   }
 
-  bool split_at_kinks() const { return solver_is_exact && options_.kink_angle > 0; }
+  bool split_at_kinks() const { return solver_has_cones && options_.kink_angle > 0; }
   const std::vector<std::array<double, 3> >& cone_samples() const
   {
     return options_.field == Field::cone ? Exact_solver::cone_samples() : Exact_solver::corner_samples();

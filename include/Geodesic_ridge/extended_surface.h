@@ -158,6 +158,10 @@ public:
   {
     typedef typename Extended_surface<Point>::Mesh Mesh;
     E.mesh.clear();
+    // E is rebuilt at every pass: its arrays are sized once, not grown by doubling
+    E.mesh.reserve(static_cast<typename Mesh::size_type>(vertex_copies_.number_of_sets()),
+                   static_cast<typename Mesh::size_type>(number_of_edges()),
+                   static_cast<typename Mesh::size_type>(copies_.size()));
     const std::vector<std::uint32_t> evertex = add_vertices(E);
     // halfedge (c, k) runs from corner k to corner k+1 of copy c
     const std::vector<std::array<typename Mesh::Halfedge_index, 3> > he = add_edges(E.mesh);
@@ -286,6 +290,15 @@ private:
         E.original_vertex.push_back(fans_[root].vertex);
       }
     return evertex;
+  }
+
+  // the edges of E: one per glued pair of copy edges or border copy edge
+  std::size_t number_of_edges() const
+  {
+    std::size_t n = 0;
+    for(std::uint32_t c = 0; c < copies_.size(); ++c)
+      for(int k = 0; k < 3; ++k) n += copies_[c].nb[k] == none || copies_[c].nb[k] >= c;
+    return n;
   }
 
   // one edge of E per glued pair of copy edges or border copy edge

@@ -13,6 +13,7 @@ vertices of cone angle up to 4π (at the ends of the cut) are border vertices.
 \cgalHasModel `Geodesic_ridge::Fast_marching_solver` (first-order fast marching)
 \cgalHasModel `Geodesic_ridge::Heat_method_solver` (`CGAL::Heat_method_3`, direct or on the intrinsic Delaunay triangulation; vertex sources only)
 \cgalHasModel `Geodesic_ridge::Dijkstra_solver` (shortest paths along edges; a baseline)
+\cgalHasModel `Geodesic_ridge::Window_propagation_solver` (exact window propagation, VTP)
 
 The named parameter `Geodesic_ridge::parameters::solver()` passes a model to the
 pipeline (user manual: \ref GeodesicRidgeSecSolvers). A model of your own is

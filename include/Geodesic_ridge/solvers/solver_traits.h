@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What the pipeline asks of a solver beyond the GeodesicSolver concept: is it
-// exact? Read from the model, so that a user's wrapper of an exact solver keeps
-// the exact treatment.
+// exact, does it offer cones? Read from the model, so that a user's wrapper of
+// an exact solver keeps the exact treatment.
 #ifndef GEODESIC_RIDGE_SOLVERS_SOLVER_TRAITS_H
 #define GEODESIC_RIDGE_SOLVERS_SOLVER_TRAITS_H
 
@@ -14,23 +14,40 @@ namespace Geodesic_ridge {
 /// \ingroup PkgGeodesicRidgeSolvers
 /// The properties of a model of `GeodesicSolver` that the pipeline uses.
 /// `is_exact` is `Solver::is_exact` where the model declares it (as
-/// `static constexpr bool`), else `false`. An exact model's distances are
-/// trusted to round-off (E grows by an exact test, the kink split runs) and
-/// it must offer the cone query of `Exact_solver` (the cone field and the
-/// kink split use it): a wrapper of `Exact_solver` declares `is_exact` and
-/// forwards that call.
+/// `static constexpr bool`), else `false`: an exact model's distances are
+/// trusted to round-off (its solves steer E's growth by the exact test).
+/// `has_cones` is `Solver::has_cones` where declared, else `is_exact`: such a
+/// model offers the cone query of `Exact_solver`, which the cone field and the
+/// kink split use. A wrapper of `Exact_solver` declares `is_exact` and
+/// forwards that call; `Window_propagation_solver` is exact without cones.
 template <class Solver, class = void>
 struct Geodesic_solver_traits
 {
-  /// whether the model gives exact polyhedral distances and cones
+  /// whether the model gives exact polyhedral distances
   static constexpr bool is_exact = false;
+  /// whether the model offers `Exact_solver`'s cone query
+  static constexpr bool has_cones = false;
 };
 
 #ifndef DOXYGEN_RUNNING
+namespace internal {
+template <class Solver, class = void>
+struct Declared_cones
+{
+  static constexpr bool value = Solver::is_exact;
+};
+template <class Solver>
+struct Declared_cones<Solver, std::void_t<decltype(Solver::has_cones)> >
+{
+  static constexpr bool value = Solver::has_cones;
+};
+} // namespace internal
+
 template <class Solver>
 struct Geodesic_solver_traits<Solver, std::void_t<decltype(Solver::is_exact)> >
 {
   static constexpr bool is_exact = Solver::is_exact;
+  static constexpr bool has_cones = internal::Declared_cones<Solver>::value;
 };
 #endif
 

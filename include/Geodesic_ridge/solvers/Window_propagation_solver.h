@@ -1,0 +1,522 @@
+// Copyright (c) 2026 Geodesic_ridge developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Exact geodesic distances by window propagation, triangle by triangle
+// (Qin, Han, Yu, Yu and Zhang, "Fast and exact discrete geodesic computation
+// based on triangle-oriented wavefront propagation", SIGGRAPH 2016: VTP).
+//
+// A window is an interval of an edge that the straight lines from one
+// unfolded image of the source (or of a pseudo-source: a saddle or border
+// vertex that paths bend around) reach directly. The windows waiting to enter
+// a triangle through one of its edges are kept as one list on that half-edge
+// and cross the triangle together; the half-edges are taken in the order of
+// the smallest distance their windows can carry. A window's children on the
+// two far edges are kept only if Xin and Wang's test (2009) cannot show that
+// the distances already known at the triangle's three corners beat them.
+// Nothing is approximated: the distances at the vertices are the shortest
+// path lengths, up to floating-point rounding.
+#ifndef GEODESIC_RIDGE_SOLVERS_WINDOW_PROPAGATION_SOLVER_H
+#define GEODESIC_RIDGE_SOLVERS_WINDOW_PROPAGATION_SOLVER_H
+
+#include <Geodesic_ridge/internal/mesh_maps.h>
+#include <Geodesic_ridge/internal/solver_from_source.h>
+#include <Geodesic_ridge/source.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace Geodesic_ridge {
+namespace internal {
+
+/// The mesh as flat arrays. Half-edge `3 f + i` is face f's edge from its
+/// corner i to corner i+1 (corners in CGAL's order from `halfedge(f)`); a
+/// window on it enters face f.
+class Window_propagation
+{
+public:
+  struct Vec2
+  {
+    double x, y;
+  };
+
+  template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
+  Window_propagation(const TriangleMesh& tm, const VertexPointMap& vpm, const VertexIndexMap& vim,
+                     const FaceIndexMap& fim)
+  {
+    const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
+    point_.resize(nv);
+    for(auto v : vertices(tm))
+    {
+      const auto& p = get(vpm, v);
+      point_[get(vim, v)] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    }
+    corner_.resize(3 * nf);
+    twin_.assign(3 * nf, none);
+    std::vector<std::size_t> face_of_index(nf);
+    for(auto f : faces(tm))
+    {
+      const std::size_t fi = get(fim, f);
+      int i = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      {
+        corner_[3 * fi + i] = static_cast<std::uint32_t>(get(vim, source(h, tm)));
+        ++i;
+      }
+    }
+    for(auto f : faces(tm))
+    {
+      const std::size_t fi = get(fim, f);
+      int i = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      {
+        const auto o = opposite(h, tm);
+        if(!is_border(o, tm))
+        {
+          const std::size_t gi = get(fim, face(o, tm));
+          int j = 0;
+          for(auto g : CGAL::halfedges_around_face(halfedge(face(o, tm), tm), tm))
+          {
+            if(g == o) twin_[3 * fi + i] = 3 * gi + j;
+            ++j;
+          }
+        }
+        ++i;
+      }
+    }
+    // edge lengths, the far corner of each half-edge's face in its frame, the
+    // corner angles, the vertices' borders, the faces around each vertex
+    length_.resize(3 * nf);
+    apex_.resize(3 * nf);
+    corner_angle_.resize(3 * nf);
+    star_begin_.assign(nv + 1, 0);
+    for(std::size_t h = 0; h < 3 * nf; ++h)
+    {
+      const auto& a = point_[corner_[h]];
+      const auto& b = point_[corner_[next(h)]];
+      const auto& c = point_[corner_[prev(h)]];
+      const std::array<double, 3> u = minus(b, a), w = minus(c, a);
+      length_[h] = norm(u);
+      const double x = dot(u, w) / length_[h];
+      const std::array<double, 3> cr = cross(u, w);
+      apex_[h] = {x, norm(cr) / length_[h]};
+      corner_angle_[h] = std::atan2(norm(cr), dot(u, w));
+      ++star_begin_[corner_[h] + 1];
+    }
+    for(std::size_t v = 0; v < nv; ++v) star_begin_[v + 1] += star_begin_[v];
+    star_.resize(3 * nf);
+    std::vector<std::size_t> fill(star_begin_.begin(), star_begin_.end() - 1);
+    for(std::size_t h = 0; h < 3 * nf; ++h) star_[fill[corner_[h]]++] = h;
+    order_stars();
+  }
+  /// Distances by vertex index from a source at vertex `v`.
+  void from_vertex(std::size_t v, std::vector<double>& distance)
+  {
+    start();
+    distance_[v] = 0.;
+    arrival_[v] = std::numeric_limits<double>::quiet_NaN();
+    emit(v, 0.);
+    run(distance);
+  }
+
+  /// Distances by vertex index from point `p`, which lies in the closed
+  /// triangles of faces `faces` (one face, or the two faces of its edge).
+  template <class FaceRange>
+  void from_point(const std::array<double, 3>& p, const FaceRange& face_indices, std::vector<double>& distance)
+  {
+    start();
+    for(std::size_t f : face_indices)
+      for(std::size_t h = 3 * f; h < 3 * f + 3; ++h)
+      {
+        const std::array<double, 3> u = minus(point_[corner_[next(h)]], point_[corner_[h]]);
+        const std::array<double, 3> w = minus(p, point_[corner_[h]]);
+        improve(corner_[h], norm(w), theta_[h] + std::atan2(norm(cross(u, w)), dot(u, w)));
+        const Vec2 s = in_edge_frame(h, p);
+        if(s.y > 1e-12 * length_[h]) enter_across(h, s, 0., 0., length_[h]);
+      }
+    run(distance);
+  }
+
+  /// the number of windows that crossed a triangle in the last run
+  std::size_t propagated_windows() const { return propagated_; }
+
+private:
+  static constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+
+  // A window on a half-edge: the interval [b0, b1] of the edge (distance from
+  // the half-edge's first corner), the unfolded image of its (pseudo-)source
+  // in the half-edge's frame (first corner at the origin, edge along x, the
+  // face it enters above: the image is at y <= 0), and the distance sigma
+  // already travelled to that (pseudo-)source.
+  struct Window
+  {
+    double b0, b1;
+    Vec2 image;
+    double sigma;
+  };
+
+  static std::size_t next(std::size_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
+  static std::size_t prev(std::size_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
+  static std::array<double, 3> minus(const std::array<double, 3>& a, const std::array<double, 3>& b)
+  {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  }
+  static double dot(const std::array<double, 3>& a, const std::array<double, 3>& b)
+  {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  }
+  static std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b)
+  {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  }
+  static double norm(const std::array<double, 3>& a) { return std::sqrt(dot(a, a)); }
+  static double distance2(Vec2 a, Vec2 b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); }
+  static double cross2(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+  // point p of face(h)'s closed triangle in the frame of half-edge h (y >= 0)
+  Vec2 in_edge_frame(std::size_t h, const std::array<double, 3>& p) const
+  {
+    const std::array<double, 3> u = minus(point_[corner_[next(h)]], point_[corner_[h]]);
+    const std::array<double, 3> w = minus(p, point_[corner_[h]]);
+    return {dot(u, w) / length_[h], norm(cross(u, w)) / length_[h]};
+  }
+
+  // Around each vertex, the directions of its half-edges as angles turning
+  // counterclockwise from the first (after the border, if any), its total
+  // angle, and whether it is a pseudo-source: a saddle (total angle above
+  // 2 pi) or a border vertex, where shortest paths may bend.
+  void order_stars()
+  {
+    const std::size_t nv = point_.size();
+    theta_.assign(corner_.size(), 0.);
+    total_angle_.assign(nv, 0.);
+    kind_.assign(nv, Vertex_kind::plain);
+    const double two_pi = 2 * std::acos(-1.);
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      const std::size_t count = star_begin_[v + 1] - star_begin_[v];
+      if(count == 0) continue;
+      std::size_t first = star_[star_begin_[v]];
+      bool border = false;
+      for(std::size_t k = star_begin_[v]; k < star_begin_[v + 1]; ++k)
+        if(twin_[star_[k]] == none) { first = star_[k]; border = true; }
+      // counterclockwise around v: the next half-edge from v is the twin of
+      // the current face's edge into v
+      double theta = 0.;
+      std::size_t seen = 0;
+      for(std::size_t h = first; h != none && seen <= count;)
+      {
+        theta_[h] = theta;
+        theta += corner_angle_[h];
+        ++seen;
+        h = twin_[prev(h)];
+        if(h == first) break;
+      }
+      total_angle_[v] = theta;
+      if(seen != count) kind_[v] = Vertex_kind::unordered; // not one fan or disk: emit everywhere
+      else if(border) kind_[v] = Vertex_kind::border;
+      else if(theta > two_pi * (1 + 1e-12)) kind_[v] = Vertex_kind::saddle;
+    }
+  }
+
+  void start()
+  {
+    distance_.assign(point_.size(), std::numeric_limits<double>::infinity());
+    emitted_.assign(point_.size(), std::numeric_limits<double>::infinity());
+    arrival_.assign(point_.size(), 0.);
+    pending_.assign(corner_.size(), std::vector<Window>());
+    key_.assign(corner_.size(), std::numeric_limits<double>::infinity());
+    queue_ = Queue();
+    propagated_ = 0;
+  }
+
+  // a path of length d reaches vertex v from the direction at angle `back`
+  // around v
+  void improve(std::size_t v, double d, double back)
+  {
+    if(!(d < distance_[v])) return;
+    distance_[v] = d;
+    arrival_[v] = back;
+    if(kind_[v] != Vertex_kind::plain) queue_.push(Event{d, none - 1 - v});
+  }
+
+  // A window of face(h) on its half-edge h, image s in h's frame (y > 0,
+  // inside face(h)): it crosses into the twin face, in whose frame the edge
+  // runs the other way.
+  void enter_across(std::size_t h, Vec2 s, double sigma, double t0, double t1)
+  {
+    const std::size_t t = twin_[h];
+    if(t == none) return;
+    const double L = length_[h];
+    add(t, Window{L - t1, L - t0, Vec2{L - s.x, -s.y}, sigma});
+  }
+
+  void add(std::size_t h, const Window& w)
+  {
+    // the smallest distance the window carries
+    double nearest;
+    if(w.image.x < w.b0) nearest = distance2(w.image, Vec2{w.b0, 0.});
+    else if(w.image.x > w.b1) nearest = distance2(w.image, Vec2{w.b1, 0.});
+    else nearest = -w.image.y;
+    const double key = w.sigma + nearest;
+    pending_[h].push_back(w);
+    if(key < key_[h])
+    {
+      key_[h] = key;
+      queue_.push(Event{key, h});
+    }
+  }
+
+  // Vertex v, reached at distance d, as a pseudo-source: a window across the
+  // far edge of each face around it, limited to the directions in which a
+  // path bending at v can leave. Such a path is shortest only if it turns by
+  // at least pi on each side (on the surface's side at a border vertex); the
+  // other directions are reached by the windows that pass v.
+  void emit(std::size_t v, double d)
+  {
+    emitted_[v] = d;
+    const double pi = std::acos(-1.), slack = 1e-9;
+    const double back = arrival_[v], total = total_angle_[v];
+    const bool everywhere = std::isnan(back) || kind_[v] == Vertex_kind::unordered;
+    for(std::size_t k = star_begin_[v]; k < star_begin_[v + 1]; ++k)
+    {
+      const std::size_t h = star_[k];        // from v
+      const double alpha = corner_angle_[h];
+      // the directions to leave by, as angles from the edge h: [lo, hi]
+      double lo = 0., hi = alpha;
+      if(!everywhere && kind_[v] == Vertex_kind::border)
+      {
+        if(theta_[h] + alpha >= back + pi - slack) lo = (std::max)(0., back + pi - slack - theta_[h]);
+        else if(theta_[h] <= back - pi + slack) hi = (std::min)(alpha, back - pi + slack - theta_[h]);
+        else continue;
+      }
+      else if(!everywhere)
+      {
+        // turning counterclockwise from `back`, the directions in [pi, total - pi]
+        const double range = total - 2 * pi + 2 * slack;
+        double from = std::fmod(theta_[h] - back - pi + slack, total);
+        if(from < 0) from += total;
+        if(from <= range) hi = (std::min)(alpha, range - from);
+        else if(from + alpha >= total) { lo = total - from; hi = (std::min)(alpha, total + range - from); }
+        else continue;
+      }
+      const std::size_t far = next(h);       // the edge opposite v, from b to c
+      improve(corner_[far], d + length_[h], theta_[far] + corner_angle_[far]);
+      improve(corner_[next(far)], d + length_[prev(h)], theta_[prev(h)]);
+      // where the rays from v at angles lo and hi meet the far edge (h's frame:
+      // v at the origin, b on the x axis)
+      const Vec2 b{length_[h], 0.}, c = apex_[h];
+      const Vec2 u{(c.x - b.x) / length_[far], (c.y - b.y) / length_[far]};
+      auto meet = [&](double angle) {
+        const Vec2 r{std::cos(angle), std::sin(angle)};
+        const double den = cross2(r, u);
+        const double t = den != 0 ? -cross2(r, b) / den : 0.;
+        return (std::min)((std::max)(t, 0.), length_[far]);
+      };
+      const double t0 = lo <= 0 ? 0. : meet(lo), t1 = hi >= alpha ? length_[far] : meet(hi);
+      if(t1 > t0) enter_across(far, in_edge_frame(far, point_[v]), d, t0, t1);
+    }
+  }
+
+  // Xin and Wang's test: a child window on an edge from v1 (a corner of the
+  // edge it entered by) to the apex v2, with end B nearer v1 and end A nearer
+  // v2, is useless if a known corner distance plus the straight way from that
+  // corner beats the window at the end far from the corner: at A for v1, at B
+  // for v2 (along the edge, the window loses least there), or at B for v3,
+  // the other corner of the entry edge. The margin keeps a window against its
+  // own rounding.
+  bool useless(const Window& w, Vec2 B, Vec2 A, std::size_t v1, Vec2 p1, std::size_t v2, Vec2 p2, std::size_t v3,
+               Vec2 p3) const
+  {
+    const double at_b = w.sigma + distance2(w.image, B), at_a = w.sigma + distance2(w.image, A);
+    const double margin = 1e-12;
+    return at_a > (distance_[v1] + distance2(p1, A)) * (1 + margin) ||
+           at_b > (distance_[v2] + distance2(p2, B)) * (1 + margin) ||
+           at_b > (distance_[v3] + distance2(p3, B)) * (1 + margin);
+  }
+
+  // The part of the edge from a to b (length len, in h's entry frame) that
+  // the lines from the image through [b0, b1] reach: [lo, hi] from a.
+  static bool reached(const Window& w, Vec2 a, Vec2 b, double len, double& lo, double& hi)
+  {
+    const Vec2 u{(b.x - a.x) / len, (b.y - a.y) / len};
+    const Vec2 d0{w.b0 - w.image.x, -w.image.y}, d1{w.b1 - w.image.x, -w.image.y};
+    const Vec2 as{a.x - w.image.x, a.y - w.image.y};
+    lo = 0;
+    hi = len;
+    // right of the ray through b0: cross(d0, X - s) <= 0; left of the ray through b1: >= 0
+    auto clip = [&](double alpha, double beta) { // keep alpha + beta t <= 0
+      if(beta > 0) hi = (std::min)(hi, -alpha / beta);
+      else if(beta < 0) lo = (std::max)(lo, -alpha / beta);
+      else if(alpha > 0) hi = -1;
+    };
+    clip(cross2(d0, as), cross2(d0, u));
+    clip(-cross2(d1, as), -cross2(d1, u));
+    return hi - lo > 1e-12 * len;
+  }
+
+  // The windows waiting on h cross face(h).
+  void cross_face(std::size_t h)
+  {
+    std::vector<Window> windows;
+    windows.swap(pending_[h]);
+    key_[h] = std::numeric_limits<double>::infinity();
+    const std::size_t h1 = next(h), h2 = prev(h);
+    const std::size_t v0 = corner_[h], v1 = corner_[h1], v2 = corner_[h2];
+    const Vec2 p0{0., 0.}, p1{length_[h], 0.}, p2 = apex_[h];
+    for(const Window& w : windows)
+    {
+      ++propagated_;
+      // the apex
+      const Vec2 d0{w.b0 - w.image.x, -w.image.y}, d1{w.b1 - w.image.x, -w.image.y};
+      const Vec2 sp{p2.x - w.image.x, p2.y - w.image.y};
+      // (within rounding: a vertex on a boundary ray, e.g. on the line of an
+      // edge from the source, is reached by the windows on both sides)
+      const double round_off = 1e-10 * (std::abs(sp.x) + std::abs(sp.y));
+      if(cross2(d0, sp) <= round_off * (std::abs(d0.x) + std::abs(d0.y)) &&
+         cross2(d1, sp) >= -round_off * (std::abs(d1.x) + std::abs(d1.y)))
+      {
+        const double d = w.sigma + distance2(w.image, p2);
+        if(d < distance_[v2])
+        {
+          // the way back, turning counterclockwise from the edge to v0
+          const Vec2 e{p0.x - p2.x, p0.y - p2.y}, back{-sp.x, -sp.y};
+          const double turn = std::atan2(cross2(e, back), e.x * back.x + e.y * back.y);
+          improve(v2, d, theta_[h2] + (std::min)((std::max)(turn, 0.), corner_angle_[h2]));
+        }
+      }
+      double lo, hi;
+      // across the edge from v1 to the apex
+      if(reached(w, p1, p2, length_[h1], lo, hi))
+      {
+        const Vec2 u{(p2.x - p1.x) / length_[h1], (p2.y - p1.y) / length_[h1]};
+        const Vec2 B{p1.x + lo * u.x, p1.y + lo * u.y}, A{p1.x + hi * u.x, p1.y + hi * u.y};
+        if(!useless(w, B, A, v1, p1, v2, p2, v0, p0))
+          enter_across(h1, Vec2{(w.image.x - p1.x) * u.x + (w.image.y - p1.y) * u.y,
+                                u.x * (w.image.y - p1.y) - u.y * (w.image.x - p1.x)},
+                       w.sigma, lo, hi);
+      }
+      // across the edge from the apex to v0
+      if(reached(w, p2, p0, length_[h2], lo, hi))
+      {
+        const Vec2 u{(p0.x - p2.x) / length_[h2], (p0.y - p2.y) / length_[h2]};
+        const Vec2 A{p2.x + lo * u.x, p2.y + lo * u.y}, B{p2.x + hi * u.x, p2.y + hi * u.y};
+        if(!useless(w, B, A, v0, p0, v2, p2, v1, p1))
+          enter_across(h2, Vec2{(w.image.x - p2.x) * u.x + (w.image.y - p2.y) * u.y,
+                                u.x * (w.image.y - p2.y) - u.y * (w.image.x - p2.x)},
+                       w.sigma, lo, hi);
+      }
+    }
+  }
+
+  void run(std::vector<double>& distance)
+  {
+    while(!queue_.empty())
+    {
+      const Event e = queue_.top();
+      queue_.pop();
+      if(e.what >= corner_.size() && e.what != none)
+      {
+        const std::size_t v = none - 1 - e.what;
+        if(e.key == distance_[v] && distance_[v] < emitted_[v]) emit(v, distance_[v]);
+      }
+      else if(e.key == key_[e.what])
+        cross_face(e.what);
+    }
+    distance = distance_;
+  }
+
+  // a half-edge whose windows may cross its face, or (what >= 3 F) a vertex
+  // to emit as a pseudo-source, by the smallest distance it carries
+  struct Event
+  {
+    double key;
+    std::size_t what;
+    bool operator>(const Event& o) const { return key > o.key; }
+  };
+  typedef std::priority_queue<Event, std::vector<Event>, std::greater<Event> > Queue;
+
+  std::vector<std::array<double, 3> > point_;
+  std::vector<std::uint32_t> corner_;
+  std::vector<std::size_t> twin_;
+  std::vector<double> length_;
+  std::vector<Vec2> apex_;
+  std::vector<double> corner_angle_, theta_, total_angle_;
+  enum class Vertex_kind : char { plain, saddle, border, unordered };
+  std::vector<Vertex_kind> kind_;
+  std::vector<std::size_t> star_begin_, star_;
+
+  std::vector<double> distance_, emitted_, key_;
+  // the direction back along the best path found to each vertex, as an angle
+  // around it (NaN: from everywhere, at the source)
+  std::vector<double> arrival_;
+  std::vector<std::vector<Window> > pending_;
+  Queue queue_;
+  std::size_t propagated_ = 0;
+};
+
+} // namespace internal
+
+/// \ingroup PkgGeodesicRidgeSolvers
+/// Model of `GeodesicSolver`: exact distances by window propagation across
+/// whole triangles (VTP, Qin et al. 2016), written for this package. Exact in
+/// the sense of `Exact_solver` (CGAL's `Surface_mesh_shortest_path`): the
+/// shortest path lengths on the mesh, up to floating-point rounding (within
+/// 1e-9 relative of it on the test meshes). Its memory holds the wavefront
+/// only, not a tree of all windows, and it is much faster on large meshes.
+/// It offers no cones: the cone field (`field(Field::cone)`) needs
+/// `Exact_solver`. Sources on a vertex, on an edge or inside a face; border
+/// edges are respected (paths bend around border vertices).
+struct Window_propagation_solver : internal::Solver_from_source<Window_propagation_solver>
+{
+  /// "vtp"
+  static const char* name() { return "vtp"; }
+  /// `true`: exact distances (`Geodesic_solver_traits`)
+  static constexpr bool is_exact = true;
+  /// `false`: no cone query (`Geodesic_solver_traits`)
+  static constexpr bool has_cones = false;
+
+private:
+  friend struct internal::Solver_from_source<Window_propagation_solver>;
+  template <class TriangleMesh, class VertexDistanceMap, class NamedParameters>
+  static void run(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, VertexDistanceMap distance,
+                  const NamedParameters& np)
+  {
+    const auto maps = internal::mesh_maps(tm, np);
+    internal::Window_propagation propagation(tm, maps.vpm, maps.vim, maps.fim);
+    std::vector<double> d;
+    if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX)
+      propagation.from_vertex(get(maps.vim, src.vertex), d);
+    else
+    {
+      const auto f = src.location.first;
+      std::array<double, 3> p = {0., 0., 0.};
+      int k = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      {
+        const auto& q = get(maps.vpm, source(h, tm));
+        const double b = src.location.second[k++];
+        p[0] += b * CGAL::to_double(q.x());
+        p[1] += b * CGAL::to_double(q.y());
+        p[2] += b * CGAL::to_double(q.z());
+      }
+      std::vector<std::size_t> face_indices;
+      for(auto g : src.faces) face_indices.push_back(get(maps.fim, g));
+      propagation.from_point(p, face_indices, d);
+    }
+    for(auto v : vertices(tm)) put(distance, v, d[get(maps.vim, v)]);
+  }
+};
+
+} // namespace Geodesic_ridge
+
+#endif // GEODESIC_RIDGE_SOLVERS_WINDOW_PROPAGATION_SOLVER_H
