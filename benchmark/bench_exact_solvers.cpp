@@ -62,7 +62,10 @@ struct Measure
 {
   double seconds = 0;
   double ridge_to_ridge[4] = {0, 0, 0, 0}; // fine -> coarse p95, max; coarse -> fine p95, max
-  std::size_t faces = 0, polylines = 0;
+  double smsp_seconds = -1, difference = 0;   // one solve on M
+  double ridge_length[2] = {0, 0};              // coarse, fine (coarse mean edges)
+  int rings[2] = {0, 0}, solves[2] = {0, 0};
+  std::size_t mesh_faces = 0, faces = 0, polylines = 0;
   long peak_kb = 0;
   bool ok = false;
 };
@@ -125,6 +128,15 @@ Mesh midpoint_subdivision(const Mesh& coarse)
 }
 
 template <class Ridge>
+double length_of(const Ridge& rc)
+{
+  double l = 0;
+  for(const auto& pl : rc.polylines)
+    for(std::size_t i = 1; i < pl.size(); ++i) l += std::sqrt(CGAL::squared_distance(pl[i - 1].point, pl[i].point));
+  return l;
+}
+
+template <class Ridge>
 std::vector<K::Segment_3> segments_of(const Ridge& rc)
 {
   std::vector<K::Segment_3> out;
@@ -149,6 +161,13 @@ std::pair<double, double> ridge_to_ridge(const Ridge& from, const std::vector<K:
   if(d.empty()) return {0., 0.};
   std::sort(d.begin(), d.end());
   return {d[static_cast<std::size_t>(0.95 * (d.size() - 1))], d.back()};
+}
+
+std::string difference_text(double d)
+{
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1e", d);
+  return b;
 }
 
 double mean_edge(const Mesh& m)
@@ -189,29 +208,9 @@ int main(int argc, char** argv)
                "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for(const std::string& file : files)
   {
-    Mesh mesh;
-    Geodesic_ridge::IO::read_triangle_mesh(file, mesh);
-    const std::size_t F = mesh.number_of_faces();
+    // first the whole process, each in a child forked while this process is
+    // small (a child's peak counts the pages it shares with its parent)
     const vertex_descriptor s(static_cast<Mesh::size_type>(source));
-    // one solve on M each, and the difference
-    std::vector<double> by_vtp(mesh.number_of_vertices()), by_smsp(mesh.number_of_vertices());
-    auto t0 = std::chrono::steady_clock::now();
-    Geodesic_ridge::internal::Window_propagation propagation(mesh, mesh.points(), get(CGAL::vertex_index, mesh),
-                                                             get(CGAL::face_index, mesh));
-    propagation.from_vertex(source, by_vtp);
-    const double t_vtp = seconds_since(t0);
-    const double windows = double(propagation.propagated_windows()) / F;
-    double t_smsp = -1, difference = -1;
-    if(F <= smsp_max_faces)
-    {
-      t0 = std::chrono::steady_clock::now();
-      Geodesic_ridge::Exact_solver()(mesh, s, CGAL::make_property_map(by_smsp));
-      t_smsp = seconds_since(t0);
-      difference = 0;
-      for(std::size_t v = 0; v < by_vtp.size(); ++v)
-        if(by_smsp[v] > 0) difference = std::max(difference, std::abs(by_vtp[v] - by_smsp[v]) / by_smsp[v]);
-    }
-    // the whole process, each in a child
     auto whole = [&](auto solver) {
       return in_child([&] {
         const auto t = std::chrono::steady_clock::now();
@@ -220,13 +219,42 @@ int main(int argc, char** argv)
         const auto rc = Geodesic_ridge::compute_ridge_curve(m, s, p::solver(solver));
         Measure r;
         r.seconds = seconds_since(t);
+        r.mesh_faces = m.number_of_faces();
         r.faces = rc.statistics.extended_surface.number_of_faces;
         r.polylines = rc.polylines.size();
         return r;
       });
     };
     const Measure vtp = whole(Geodesic_ridge::Window_propagation_solver());
-    const Measure exact = F <= smsp_max_faces ? whole(Geodesic_ridge::Exact_solver()) : Measure();
+    const Measure exact =
+        vtp.ok && vtp.mesh_faces <= smsp_max_faces ? whole(Geodesic_ridge::Exact_solver()) : Measure();
+    // one solve on M by each solver, and the largest difference
+    const Measure on_mesh = in_child([&] {
+      Mesh mesh;
+      Geodesic_ridge::IO::read_triangle_mesh(file, mesh);
+      Measure r;
+      r.mesh_faces = mesh.number_of_faces();
+      std::vector<double> by_vtp(mesh.number_of_vertices()), by_smsp(mesh.number_of_vertices());
+      auto t0 = std::chrono::steady_clock::now();
+      Geodesic_ridge::internal::Window_propagation propagation(mesh, mesh.points(), get(CGAL::vertex_index, mesh),
+                                                               get(CGAL::face_index, mesh));
+      propagation.from_vertex(source, by_vtp);
+      r.seconds = seconds_since(t0);
+      r.polylines = propagation.propagated_windows();
+      r.smsp_seconds = -1;
+      if(mesh.number_of_faces() <= smsp_max_faces)
+      {
+        t0 = std::chrono::steady_clock::now();
+        Geodesic_ridge::Exact_solver()(mesh, s, CGAL::make_property_map(by_smsp));
+        r.smsp_seconds = seconds_since(t0);
+        for(std::size_t v = 0; v < by_vtp.size(); ++v)
+          if(by_smsp[v] > 0) r.difference = std::max(r.difference, std::abs(by_vtp[v] - by_smsp[v]) / by_smsp[v]);
+      }
+      return r;
+    });
+    const std::size_t F = on_mesh.mesh_faces;
+    const double t_vtp = on_mesh.seconds, t_smsp = on_mesh.smsp_seconds, difference = on_mesh.difference;
+    const double windows = F ? double(on_mesh.polylines) / F : 0.;
     auto cell = [](bool ok, double x, int digits) {
       if(!ok) return std::string("–");
       char b[32];
@@ -235,7 +263,7 @@ int main(int argc, char** argv)
     };
     std::printf("| %s | %zu | %s | %.3f | %s | %.1f | %s | %s | %s | %s | %s | %s |\n",
                 fs::path(file).stem().string().c_str(), F, cell(t_smsp >= 0, t_smsp, 2).c_str(), t_vtp,
-                difference >= 0 ? std::to_string(difference).c_str() : "–", windows,
+                t_smsp >= 0 ? difference_text(difference).c_str() : "–", windows,
                 cell(vtp.ok, vtp.seconds, 2).c_str(), cell(vtp.ok, vtp.peak_kb / 1024., 0).c_str(),
                 cell(vtp.ok, double(vtp.peak_kb) / F, 2).c_str(), cell(vtp.ok, double(vtp.faces) / F, 3).c_str(),
                 cell(exact.ok, exact.seconds, 2).c_str(), cell(exact.ok, exact.peak_kb / 1024., 0).c_str());
@@ -245,16 +273,19 @@ int main(int argc, char** argv)
   if(subdivide <= 0) return 0;
   std::cout << "\nMidpoint subdivision: the fine mesh's exact ridge (vtp) against the coarse mesh's, in coarse mean edges\n\n"
                "| mesh | subdivisions | F fine | pipeline on fine (s) | peak (MB) | fine -> coarse p95 / max "
-               "| coarse -> fine p95 / max |\n|---|---:|---:|---:|---:|---|---|\n";
+               "| coarse -> fine p95 / max | ridge length coarse / fine | rings coarse / fine | solves coarse / fine |\n"
+               "|---|---:|---:|---:|---:|---|---|---|---|---|\n";
   for(const std::string& file : files)
   {
-    Mesh coarse;
-    Geodesic_ridge::IO::read_triangle_mesh(file, coarse);
     const vertex_descriptor s(static_cast<Mesh::size_type>(source));
-    const double h = mean_edge(coarse);
-    const auto coarse_ridge = Geodesic_ridge::compute_ridge_curve(coarse, s, p::solver(Geodesic_ridge::Window_propagation_solver()));
-    const auto coarse_segments = segments_of(coarse_ridge);
+    // all in a child, so that its peak memory is the fine mesh's run
     const Measure fine = in_child([&] {
+      Mesh coarse;
+      Geodesic_ridge::IO::read_triangle_mesh(file, coarse);
+      const double h = mean_edge(coarse);
+      const auto coarse_ridge =
+          Geodesic_ridge::compute_ridge_curve(coarse, s, p::solver(Geodesic_ridge::Window_propagation_solver()));
+      const auto coarse_segments = segments_of(coarse_ridge);
       Mesh m = coarse;
       for(int k = 0; k < subdivide; ++k) m = midpoint_subdivision(m);
       const auto t = std::chrono::steady_clock::now();
@@ -269,12 +300,20 @@ int main(int argc, char** argv)
       r.ridge_to_ridge[1] = a.second / h;
       r.ridge_to_ridge[2] = b.first / h;
       r.ridge_to_ridge[3] = b.second / h;
+      r.ridge_length[0] = length_of(coarse_ridge) / h;
+      r.ridge_length[1] = length_of(rc) / h;
+      r.rings[0] = coarse_ridge.statistics.extended_surface.rings;
+      r.rings[1] = rc.statistics.extended_surface.rings;
+      r.solves[0] = coarse_ridge.statistics.solves;
+      r.solves[1] = rc.statistics.solves;
       return r;
     });
-    if(!fine.ok) { std::printf("| %s | %d | failed | | | | |\n", fs::path(file).stem().string().c_str(), subdivide); continue; }
+    if(!fine.ok) { std::printf("| %s | %d | failed | | | | | | | |\n", fs::path(file).stem().string().c_str(), subdivide); continue; }
     const double* d = fine.ridge_to_ridge;
-    std::printf("| %s | %d | %zu | %.2f | %ld | %.3f / %.3f | %.3f / %.3f |\n", fs::path(file).stem().string().c_str(),
-                subdivide, fine.faces, fine.seconds, fine.peak_kb / 1024, d[0], d[1], d[2], d[3]);
+    std::printf("| %s | %d | %zu | %.2f | %ld | %.3f / %.3f | %.3f / %.3f | %.1f / %.1f | %d / %d | %d / %d |\n",
+                fs::path(file).stem().string().c_str(), subdivide, fine.faces, fine.seconds, fine.peak_kb / 1024, d[0],
+                d[1], d[2], d[3], fine.ridge_length[0], fine.ridge_length[1], fine.rings[0], fine.rings[1],
+                fine.solves[0], fine.solves[1]);
     std::fflush(stdout);
   }
   return 0;

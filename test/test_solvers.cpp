@@ -49,6 +49,23 @@ Mesh load(const std::string& name)
   return m;
 }
 
+// The convex hull of n random points of the unit sphere: obtuse corners and
+// slivers.
+Mesh random_sphere_hull(int n, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::normal_distribution<double> normal;
+  std::vector<Point_3> points;
+  for(int i = 0; i < n; ++i)
+  {
+    const Vector_3 v(normal(random), normal(random), normal(random));
+    points.push_back(CGAL::ORIGIN + v / std::sqrt(v.squared_length()));
+  }
+  Mesh m;
+  CGAL::convex_hull_3(points.begin(), points.end(), m);
+  return m;
+}
+
 template <class Solver, class Source>
 std::vector<double> distances_from(const Mesh& m, const Source& s, const Solver& solver)
 {
@@ -202,16 +219,7 @@ TEST_CASE("the heat method against the exact solver, direct and on the intrinsic
 TEST_CASE("every solver against great-circle distances on a sphere with obtuse and sliver triangles", "[solvers]")
 {
   const unsigned seed = test_seed(20261203);
-  std::mt19937 random(seed);
-  std::normal_distribution<double> normal;
-  std::vector<Point_3> points;
-  for(int i = 0; i < 3000; ++i)
-  {
-    const Vector_3 v(normal(random), normal(random), normal(random));
-    points.push_back(CGAL::ORIGIN + v / std::sqrt(v.squared_length()));
-  }
-  Mesh m;
-  CGAL::convex_hull_3(points.begin(), points.end(), m);
+  const Mesh m = random_sphere_hull(3000, seed);
   std::size_t obtuse = 0, slivers = 0;
   for(face_descriptor f : m.faces())
   {
@@ -601,17 +609,7 @@ TEST_CASE("window propagation on hard cases: holes and pinched vertices, corners
   }
   SECTION("needles and caps: the convex hull of random points on a sphere")
   {
-    std::mt19937 random(seed);
-    std::normal_distribution<double> normal;
-    std::vector<Point_3> points;
-    for(int i = 0; i < 1500; ++i)
-    {
-      const Vector_3 v(normal(random), normal(random), normal(random));
-      points.push_back(CGAL::ORIGIN + v / std::sqrt(v.squared_length()));
-    }
-    Mesh m;
-    CGAL::convex_hull_3(points.begin(), points.end(), m);
-    check_window_propagation(m, "sphere hull of 1500 random points", seed);
+    check_window_propagation(random_sphere_hull(1500, seed), "sphere hull of 1500 random points", seed);
   }
   SECTION("the doubly covered square from a point on an edge: the mirror images")
   {

@@ -12,6 +12,7 @@
 
 #include <Geodesic_ridge/exceptions.h>
 #include <Geodesic_ridge/internal/corner_angles.h>
+#include <Geodesic_ridge/internal/edge_graph_distances.h>
 #include <Geodesic_ridge/internal/graph_polylines.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/union_find.h>
@@ -25,7 +26,6 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
-#include <boost/graph/dijkstra_shortest_paths.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
@@ -259,26 +259,8 @@ private:
   // Step 1: Boost's Dijkstra on the mesh graph, several seeds for a surface point.
   void shortest_path_tree()
   {
-    length_.resize(ne_);
-    for(edge_descriptor e : edges(tm_))
-      length_[ei(e)] = distance_between(maps_.vpm, source(e, tm_), target(e, tm_));
     const double inf = std::numeric_limits<double>::infinity();
-    r_.distance.assign(nv_, inf);
-    r_.parent.resize(nv_);
-    for(vertex_descriptor v : vertices(tm_)) r_.parent[vi(v)] = v;
-    std::vector<vertex_descriptor> seed_vertices;
-    for(const auto& s : src_.seeds)
-    {
-      r_.distance[vi(s.first)] = s.second;
-      seed_vertices.push_back(s.first);
-    }
-    boost::dijkstra_shortest_paths_no_init(
-        tm_, seed_vertices.begin(), seed_vertices.end(),
-        boost::make_iterator_property_map(r_.parent.begin(), maps_.vim),
-        boost::make_iterator_property_map(r_.distance.begin(), maps_.vim),
-        boost::make_iterator_property_map(length_.begin(), maps_.eim), maps_.vim,
-        std::less<double>(), boost::closed_plus<double>(inf), 0.0,
-        boost::default_dijkstra_visitor());
+    edge_graph_distances(tm_, maps_, src_.seeds, length_, r_.distance, r_.parent);
     // A straight segment from the source is a geodesic (no edge path in R^3 is
     // shorter), so seeds stay roots and a vertex source's neighbours hang from it,
     // whatever ties the floating-point sums produced: the cut never touches the source.

@@ -8,6 +8,7 @@
 #ifndef GEODESIC_RIDGE_SOLVERS_DIJKSTRA_SOLVER_H
 #define GEODESIC_RIDGE_SOLVERS_DIJKSTRA_SOLVER_H
 
+#include <Geodesic_ridge/internal/edge_graph_distances.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/solver_from_source.h>
 #include <Geodesic_ridge/source.h>
@@ -16,13 +17,6 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
-#include <boost/graph/dijkstra_shortest_paths.hpp>
-#include <boost/property_map/property_map.hpp>
-
-#include <array>
-#include <functional>
-#include <limits>
-#include <utility>
 #include <vector>
 
 namespace Geodesic_ridge {
@@ -45,27 +39,10 @@ private:
   static void run(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, VertexDistanceMap distance,
                   const NamedParameters& np)
   {
-    typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
     const auto maps = internal::mesh_maps(tm, np);
-    std::vector<double> length(num_edges(tm));
-    for(auto e : edges(tm))
-      length[get(maps.eim, e)] = internal::distance_between(maps.vpm, source(e, tm), target(e, tm));
-    const double inf = std::numeric_limits<double>::infinity();
-    std::vector<double> d(num_vertices(tm), inf);
-    std::vector<vertex_descriptor> parent(num_vertices(tm));
-    for(auto v : vertices(tm)) parent[get(maps.vim, v)] = v;
-    std::vector<vertex_descriptor> roots;
-    for(const auto& s : src.seeds)
-    {
-      double& ds = d[get(maps.vim, s.first)];
-      if(s.second < ds) ds = s.second;
-      roots.push_back(s.first);
-    }
-    boost::dijkstra_shortest_paths_no_init(
-        tm, roots.begin(), roots.end(), boost::make_iterator_property_map(parent.begin(), maps.vim),
-        boost::make_iterator_property_map(d.begin(), maps.vim),
-        boost::make_iterator_property_map(length.begin(), maps.eim), maps.vim, std::less<double>(),
-        boost::closed_plus<double>(inf), 0.0, boost::default_dijkstra_visitor());
+    std::vector<double> length, d;
+    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> parent;
+    internal::edge_graph_distances(tm, maps, src.seeds, length, d, parent);
     for(auto v : vertices(tm)) put(distance, v, d[get(maps.vim, v)]);
   }
 };

@@ -394,28 +394,28 @@ private:
           improve(v2, d, theta_[h2] + (std::min)((std::max)(turn, 0.), corner_angle_[h2]));
         }
       }
-      double lo, hi;
-      // across the edge from v1 to the apex
-      if(reached(w, p1, p2, length_[h1], lo, hi))
-      {
-        const Vec2 u{(p2.x - p1.x) / length_[h1], (p2.y - p1.y) / length_[h1]};
-        const Vec2 B{p1.x + lo * u.x, p1.y + lo * u.y}, A{p1.x + hi * u.x, p1.y + hi * u.y};
-        if(!useless(w, B, A, v1, p1, v2, p2, v0, p0))
-          enter_across(h1, Vec2{(w.image.x - p1.x) * u.x + (w.image.y - p1.y) * u.y,
-                                u.x * (w.image.y - p1.y) - u.y * (w.image.x - p1.x)},
-                       w.sigma, lo, hi);
-      }
-      // across the edge from the apex to v0
-      if(reached(w, p2, p0, length_[h2], lo, hi))
-      {
-        const Vec2 u{(p0.x - p2.x) / length_[h2], (p0.y - p2.y) / length_[h2]};
-        const Vec2 A{p2.x + lo * u.x, p2.y + lo * u.y}, B{p2.x + hi * u.x, p2.y + hi * u.y};
-        if(!useless(w, B, A, v0, p0, v2, p2, v1, p1))
-          enter_across(h2, Vec2{(w.image.x - p2.x) * u.x + (w.image.y - p2.y) * u.y,
-                                u.x * (w.image.y - p2.y) - u.y * (w.image.x - p2.x)},
-                       w.sigma, lo, hi);
-      }
+      cross_to(w, h1, v1, p1, v2, p2, false, v0, p0); // across the edge from v1 to the apex
+      cross_to(w, h2, v2, p2, v0, p0, true, v1, p1);  // across the edge from the apex to v0
     }
+  }
+
+  // The child of window w on edge e of its face, from corner a to corner b
+  // (at pa, pb in the entry frame), one of which is the apex; `other` is the
+  // entry edge's corner not on e.
+  void cross_to(const Window& w, std::size_t e, std::size_t a, Vec2 pa, std::size_t b, Vec2 pb, bool apex_first,
+                std::size_t other, Vec2 po)
+  {
+    double lo, hi;
+    if(!reached(w, pa, pb, length_[e], lo, hi)) return;
+    const Vec2 u{(pb.x - pa.x) / length_[e], (pb.y - pa.y) / length_[e]};
+    const Vec2 at_lo{pa.x + lo * u.x, pa.y + lo * u.y}, at_hi{pa.x + hi * u.x, pa.y + hi * u.y};
+    // the test takes the end near the entry corner, then the end near the apex
+    const bool dropped = apex_first ? useless(w, at_hi, at_lo, b, pb, a, pa, other, po)
+                                    : useless(w, at_lo, at_hi, a, pa, b, pb, other, po);
+    if(dropped) return;
+    const Vec2 image{(w.image.x - pa.x) * u.x + (w.image.y - pa.y) * u.y,
+                     u.x * (w.image.y - pa.y) - u.y * (w.image.x - pa.x)};
+    enter_across(e, image, w.sigma, lo, hi);
   }
 
   void run(std::vector<double>& distance)
