@@ -611,6 +611,14 @@ TEST_CASE("window propagation on hard cases: holes and pinched vertices, corners
   {
     check_window_propagation(random_sphere_hull(1500, seed), "sphere hull of 1500 random points", seed);
   }
+  SECTION("a face with collinear corners is refused")
+  {
+    Mesh m = load("torus_1k.off");
+    const auto h = m.halfedge(face_descriptor(7));
+    m.point(m.target(m.next(h))) = m.point(m.source(h)); // exactly collinear
+    CHECK_THROWS_AS(distances_from(m, vertex_descriptor(0), Geodesic_ridge::Window_propagation_solver()),
+                    Geodesic_ridge::Invalid_mesh_error);
+  }
   SECTION("the doubly covered square from a point on an edge: the mirror images")
   {
     const Doubly_covered_square sq = make_doubly_covered_square(12, 0.25, seed);

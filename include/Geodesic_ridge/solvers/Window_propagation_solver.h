@@ -18,10 +18,12 @@
 #ifndef GEODESIC_RIDGE_SOLVERS_WINDOW_PROPAGATION_SOLVER_H
 #define GEODESIC_RIDGE_SOLVERS_WINDOW_PROPAGATION_SOLVER_H
 
+#include <Geodesic_ridge/exceptions.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/solver_from_source.h>
 #include <Geodesic_ridge/source.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -32,6 +34,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -62,7 +65,6 @@ public:
     }
     corner_.resize(3 * nf);
     twin_.assign(3 * nf, none);
-    std::vector<std::size_t> face_of_index(nf);
     for(auto f : faces(tm))
     {
       const std::size_t fi = get(fim, f);
@@ -72,6 +74,13 @@ public:
         corner_[3 * fi + i] = static_cast<std::uint32_t>(get(vim, source(h, tm)));
         ++i;
       }
+      // unfolding needs triangles of positive area (decided exactly)
+      typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 P;
+      auto at = [&](int k) { const auto& q = point_[corner_[3 * fi + k]]; return P(q[0], q[1], q[2]); };
+      if(CGAL::collinear(at(0), at(1), at(2)))
+        throw Invalid_mesh_error("face " + std::to_string(fi) +
+                                 " is degenerate (its corners are collinear): window propagation needs "
+                                 "triangles of positive area");
     }
     for(auto f : faces(tm))
     {
