@@ -24,6 +24,7 @@
 #include <Geodesic_ridge/source.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -507,17 +508,9 @@ private:
       propagation.from_vertex(get(maps.vim, src.vertex), d);
     else
     {
-      const auto f = src.location.first;
-      std::array<double, 3> p = {0., 0., 0.};
-      int k = 0;
-      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
-      {
-        const auto& q = get(maps.vpm, source(h, tm));
-        const double b = src.location.second[k++];
-        p[0] += b * CGAL::to_double(q.x());
-        p[1] += b * CGAL::to_double(q.y());
-        p[2] += b * CGAL::to_double(q.z());
-      }
+      const auto q = CGAL::Polygon_mesh_processing::construct_point(src.location, tm,
+                                                                    CGAL::parameters::vertex_point_map(maps.vpm));
+      const std::array<double, 3> p = {CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())};
       std::vector<std::size_t> face_indices;
       for(auto g : src.faces) face_indices.push_back(get(maps.fim, g));
       propagation.from_point(p, face_indices, d);
