@@ -703,7 +703,16 @@ public:
   {
     st_.solver = solver_.name();
     const std::vector<double> field = timings_.time("tree_distances", [&] { return distances_on_mesh(); });
-    timings_.time("rough_cut_locus", [&] { rough_cut_locus(field); });
+    timings_.time("rough_cut_locus", [&] {
+      if(!angles_)
+      {
+        own_angles_ = corner_angles(tm_, maps_.vpm, maps_.vim, maps_.fim);
+        angles_ = &own_angles_;
+      }
+      rough_cut_locus(field);
+      // stage 3 needs only the angle sums (the curvature near free ends)
+      std::vector<std::array<double, 3> >().swap(own_angles_.angle);
+    });
     mean_edge_ = mean_edge_length();
     Builder builder(tm_, result_.rough_cut_locus, maps_);
     timings_.time("extended_surface", [&] {
@@ -787,13 +796,16 @@ private:
   void assemble_ridge()
   {
     std::size_t split_copies = 0;
-    const std::vector<Face_copies> fronts_of_faces =
-        split_at_kinks() ? Kink_splitter<TriangleMesh, VertexPointMap, FaceIndexMap, Point>(
-                               tm_, maps_.vpm, maps_.fim, E_, copy_cones_, cone_samples(), options_.kink_angle,
-                               mean_edge_)(face_copies_, split_copies)
-                         : face_copies_;
-    assemble_ridge_curve(tm_, E_, fronts_of_faces, mean_edge_, options_.minimum_angle, options_.kink_angle, maps_,
-                         result_.polylines, result_.regions, st_.ridge);
+    // without a split, the copies as they are (no copy of them: they are a few
+    // heap blocks per face, at the peak of memory)
+    std::vector<Face_copies> split_fronts;
+    if(split_at_kinks())
+      split_fronts = Kink_splitter<TriangleMesh, VertexPointMap, FaceIndexMap, Point>(
+          tm_, maps_.vpm, maps_.fim, E_, copy_cones_, cone_samples(), options_.kink_angle,
+          mean_edge_)(face_copies_, split_copies);
+    assemble_ridge_curve(tm_, E_, split_at_kinks() ? split_fronts : face_copies_, mean_edge_, options_.minimum_angle,
+                         options_.kink_angle, maps_, angles_->angle_sum, result_.polylines, result_.regions,
+                         st_.ridge);
     st_.ridge.split_copies = split_copies;
   }
 
@@ -822,6 +834,7 @@ private:
   const Pipeline_options options_;
   const Maps maps_;
   const Corner_angles* angles_;
+  Corner_angles own_angles_; // when no batch gave them: for stage 1, then the sums for stage 3
   Ridge_curve<TriangleMesh, Point> result_;
   Geodesic_ridge_statistics& st_;
   Timings& timings_;

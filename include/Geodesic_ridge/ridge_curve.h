@@ -395,10 +395,11 @@ class Ridge_curve_assembler
 public:
   Ridge_curve_assembler(const TriangleMesh& tm, const Extended_surface<Point>& E,
                         const std::vector<Face_copies>& face_copies, double mean_edge, double minimum_angle,
-                        double kink_angle, const Maps& maps, std::vector<std::vector<Ridge_region_cell> >& regions,
-                        Ridge_curve_statistics& st)
+                        double kink_angle, const Maps& maps, const std::vector<double>& angle_sum,
+                        std::vector<std::vector<Ridge_region_cell> >& regions, Ridge_curve_statistics& st)
     : tm_(tm), maps_(maps), E_(E), face_copies_(face_copies), mean_edge_(mean_edge), minimum_angle_(minimum_angle),
-      kink_angle_(kink_angle), regions_(regions), st_(st), faces_(tm, maps.vpm, maps.fim), nf_(num_faces(tm)), same_front_tolerance_(1e-6 * mean_edge)
+      kink_angle_(kink_angle), angle_sum_(angle_sum), regions_(regions), st_(st), faces_(tm, maps.vpm, maps.fim),
+      nf_(num_faces(tm)), same_front_tolerance_(1e-6 * mean_edge)
   {}
 
   void run(std::vector<std::vector<Ridge_point<Point> > >& polylines)
@@ -416,7 +417,8 @@ public:
   }
 
 private:
-  struct Cell { std::size_t face, copy; std::array<double, 3> field; bool split; };
+  // a cell: its copy, its linear field and the field's gradient (in the face's plane)
+  struct Cell { std::size_t copy; std::array<double, 3> field, gradient; bool split; };
   struct Segment { std::size_t a, b, left, right; double strength; double angle; bool ridge; };
   // an interval of an edge (t along it) and the cell that wins there on one side
   struct Interval { Q lo, hi; std::size_t cell; };
@@ -444,12 +446,14 @@ private:
   }
 
   // The lower envelope of every face's copies, its cells, and the regions.
+  // The cells of face f are cells_[first_cell_[f]] to cells_[first_cell_[f + 1] - 1],
+  // in the order of its envelope's cells; every array is sized before it is
+  // filled (one block each, and one per region: most faces have one cell).
   void compute_envelopes()
   {
-    cells_of_face_.resize(nf_);
     envelope_of_.assign(nf_, nullptr);
-    regions_.assign(nf_, {});
     whole_triangle_ = whole_triangle();
+    first_cell_.assign(nf_ + 1, 0);
     for(std::size_t f = 0; f < nf_; ++f)
     {
       const Face_copies& fc = face_copies_[f];
@@ -460,19 +464,36 @@ private:
         envelope_of_[f] = &computed_.back();
       }
       if(fc.copies.size() > 1) ++st_.faces_with_several_copies;
-      st_.surviving_copies += envelope_of_[f]->cells.size();
+      first_cell_[f + 1] = first_cell_[f] + envelope_of_[f]->cells.size();
+    }
+    st_.surviving_copies = first_cell_[nf_];
+    const std::vector<std::array<double, 3> > whole_polygon = polygon_to_double(whole_triangle_.cells[0].polygon);
+    cells_.reserve(first_cell_[nf_]);
+    regions_.assign(nf_, {});
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      const Face_copies& fc = face_copies_[f];
+      const auto cp = faces_.corner_points(f);
+      regions_[f].reserve(envelope_of_[f]->cells.size());
       for(const auto& c : envelope_of_[f]->cells)
       {
-        cells_of_face_[f].push_back(cells_.size());
-        cells_.push_back(Cell{f, fc.copies[c.copy], fc.fields[c.copy], !fc.split.empty() && fc.split[c.copy]});
+        const std::array<double, 3>& field = fc.fields[c.copy];
+        cells_.push_back(Cell{fc.copies[c.copy], field, field_gradient(cp, field), !fc.split.empty() && fc.split[c.copy]});
         Ridge_region_cell rc;
         rc.copy = fc.copies[c.copy];
-        rc.field = fc.fields[c.copy];
-        for(const auto& p : c.polygon)
-          rc.polygon.push_back({{CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2])}});
+        rc.field = field;
+        rc.polygon = envelope_of_[f] == &whole_triangle_ ? whole_polygon : polygon_to_double(c.polygon);
         regions_[f].push_back(std::move(rc));
       }
     }
+  }
+
+  static std::vector<std::array<double, 3> > polygon_to_double(const std::vector<std::array<Q, 3> >& polygon)
+  {
+    std::vector<std::array<double, 3> > out;
+    out.reserve(polygon.size());
+    for(const auto& p : polygon) out.push_back({{CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2])}});
+    return out;
   }
 
   // are the copies of cells c1 and c2 glued in E across edge k1 of c1's face (one sheet)?
@@ -489,7 +510,7 @@ private:
   std::size_t cell_of(std::size_t f, std::size_t local_copy) const
   {
     for(std::size_t i = 0; i < envelope_of_[f]->cells.size(); ++i)
-      if(envelope_of_[f]->cells[i].copy == local_copy) return cells_of_face_[f][i];
+      if(envelope_of_[f]->cells[i].copy == local_copy) return first_cell_[f] + i;
     return none;
   }
 
@@ -568,12 +589,11 @@ private:
   {
     for(std::size_t f = 0; f < nf_; ++f)
     {
-      const auto cp = faces_.corner_points(f);
       for(const auto& s : envelope_of_[f]->segments)
       {
         const std::size_t ca = cell_of(f, s.copy_a), cb = cell_of(f, s.copy_b);
         if(same_field(cells_[ca].field, cells_[cb].field)) { fronts_.unite(ca, cb); continue; }
-        const Gradient_jump j = gradient_jump_in_face(cp, cells_[ca].field, cells_[cb].field);
+        const Gradient_jump j = gradient_jump_in_face(cells_[ca], cells_[cb]);
         segments_.push_back(
             Segment{node_at(f, s.endpoints[0]), node_at(f, s.endpoints[1]), ca, cb, j.strength, j.angle, true});
         ++st_.envelope_segments;
@@ -581,12 +601,12 @@ private:
     }
   }
 
-  // the jump between two linear fields of one face (corner points cp)
-  static Gradient_jump gradient_jump_in_face(const std::array<Point, 3>& cp, const std::array<double, 3>& a,
-                                             const std::array<double, 3>& b)
+  // the jump between the linear fields of two cells of one face
+  static Gradient_jump gradient_jump_in_face(const Cell& a, const Cell& b)
   {
     typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
-    const auto ga = field_gradient(cp, a), gb = field_gradient(cp, b);
+    const std::array<double, 3>& ga = a.gradient;
+    const std::array<double, 3>& gb = b.gradient;
     const Vector va(ga[0], ga[1], ga[2]), vb(gb[0], gb[1], gb[2]);
     const double strength = std::sqrt(CGAL::to_double((va - vb).squared_length()));
     const double angle =
@@ -604,7 +624,7 @@ private:
     if(at_source(f1, k1) || at_source(f2, k2)) return Gradient_jump{0, 0};
     const auto cp1 = faces_.corner_points(f1), cp2 = faces_.corner_points(f2);
     return gradient_jump_across_edge(cp1[k1], cp1[(k1 + 1) % 3], cp1[(k1 + 2) % 3], cp2[(k2 + 2) % 3],
-                                     field_gradient(cp1, cells_[c1].field), field_gradient(cp2, cells_[c2].field));
+                                     cells_[c1].gradient, cells_[c2].gradient);
   }
 
   // edge k of face f: an edge of the source's face, or at the source vertex
@@ -650,7 +670,7 @@ private:
   bool one_sheet_across(std::size_t f1, int k1, std::size_t f2, int k2)
   {
     if(envelope_of_[f1]->cells.size() != 1 || envelope_of_[f2]->cells.size() != 1) return false;
-    const std::size_t c1 = cells_of_face_[f1][0], c2 = cells_of_face_[f2][0];
+    const std::size_t c1 = first_cell_[f1], c2 = first_cell_[f2];
     if(!glued_across(c1, k1, c2) || cells_[c1].split || cells_[c2].split ||
        kinked(edge_jump(f1, k1, c1, f2, k2, c2)))
       return false;
@@ -673,7 +693,7 @@ private:
           Q ta = c.polygon[j][(k + 1) % 3], tb = c.polygon[(j + 1) % n][(k + 1) % 3];
           if(reversed) { ta = Q(1) - ta; tb = Q(1) - tb; }
           if(tb < ta) std::swap(ta, tb);
-          if(ta < tb) out.push_back(Interval{ta, tb, cells_of_face_[f][i]});
+          if(ta < tb) out.push_back(Interval{ta, tb, first_cell_[f] + i});
         }
     }
     std::sort(out.begin(), out.end(), [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
@@ -876,11 +896,10 @@ private:
     std::vector<Segment> links;
     for(std::size_t f = 0; f < nf_; ++f)
     {
-      const auto cp = faces_.corner_points(f);
       for(const auto& s : envelope_of_[f]->segments)
       {
         const std::size_t ca = cell_of(f, s.copy_a), cb = cell_of(f, s.copy_b);
-        const Gradient_jump j = gradient_jump_in_face(cp, cells_[ca].field, cells_[cb].field);
+        const Gradient_jump j = gradient_jump_in_face(cells_[ca], cells_[cb]);
         links.push_back(
             Segment{node_at(f, s.endpoints[0]), node_at(f, s.endpoints[1]), ca, cb, j.strength, j.angle, false});
       }
@@ -968,19 +987,18 @@ private:
   struct Curvature_near
   {
     const Ridge_curve_assembler& a;
-    const Corner_angles angles;
     std::vector<vertex_descriptor> vertex_of;
     std::vector<std::size_t> seen_at;
 
     explicit Curvature_near(const Ridge_curve_assembler& assembler)
-      : a(assembler), angles(corner_angles(a.tm_, a.maps_.vpm, a.maps_.vim, a.maps_.fim)), vertex_of(num_vertices(a.tm_)),
-        seen_at(num_vertices(a.tm_), none)
+      : a(assembler), vertex_of(num_vertices(a.tm_)), seen_at(num_vertices(a.tm_), none)
     {
       for(vertex_descriptor v : vertices(a.tm_)) vertex_of[get(a.maps_.vim, v)] = v;
     }
 
-    // Gaussian curvature; none on the border (its angle sum measures the border's turning)
-    double curvature(std::size_t v) const { return a.loop_of_vertex_[v] == none ? angles.curvature(v) : 0.0; }
+    // Gaussian curvature (as `Corner_angles::curvature`); none on the border
+    // (its angle sum measures the border's turning)
+    double curvature(std::size_t v) const { return a.loop_of_vertex_[v] == none ? 2 * CGAL_PI - a.angle_sum_[v] : 0.0; }
 
     double operator()(std::size_t node)
     {
@@ -1087,6 +1105,7 @@ private:
   const Extended_surface<Point>& E_;
   const std::vector<Face_copies>& face_copies_;
   const double mean_edge_, minimum_angle_, kink_angle_;
+  const std::vector<double>& angle_sum_; // per vertex of M (by index): the sum of its corner angles
   std::vector<std::vector<Ridge_region_cell> >& regions_;
   Ridge_curve_statistics& st_;
   const Faces_by_index<TriangleMesh, typename Maps::Vertex_point_map> faces_;
@@ -1098,7 +1117,7 @@ private:
   std::deque<Lower_envelope<Q> > computed_;
   std::vector<const Lower_envelope<Q>*> envelope_of_;
   std::vector<Cell> cells_;
-  std::vector<std::vector<std::size_t> > cells_of_face_;
+  std::vector<std::size_t> first_cell_; // per face, then the number of cells
   std::map<Key, std::size_t> node_of_;
   std::vector<Ridge_point<Point> > nodes_;
   std::vector<Segment> segments_;
@@ -1112,12 +1131,13 @@ template <class TriangleMesh, class Point, class Maps>
 void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>& E,
                           const std::vector<Face_copies>& face_copies, double mean_edge,
                           double minimum_angle, double kink_angle, const Maps& maps,
+                          const std::vector<double>& angle_sum,
                           std::vector<std::vector<Ridge_point<Point> > >& polylines,
                           std::vector<std::vector<Ridge_region_cell> >& regions,
                           Ridge_curve_statistics& st)
 {
-  Ridge_curve_assembler<TriangleMesh, Maps>(tm, E, face_copies, mean_edge, minimum_angle, kink_angle, maps, regions,
-                                            st)
+  Ridge_curve_assembler<TriangleMesh, Maps>(tm, E, face_copies, mean_edge, minimum_angle, kink_angle, maps, angle_sum,
+                                            regions, st)
       .run(polylines);
 }
 
