@@ -106,6 +106,7 @@ public:
       merged_into_(soup.file_vertex_merged_into), vertices_(std::move(vertices)), faces_(std::move(faces)),
       statistics_(soup.statistics)
   {
+    file_points_.reserve(file_points.size());
     for(const FilePoint& p : file_points)
       file_points_.push_back(internal::validation::to_epick(p));
     bucket(vertex_to_file_, file_points_.size(), vertex_begin_, vertex_order_);

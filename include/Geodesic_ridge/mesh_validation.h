@@ -22,6 +22,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -74,6 +75,27 @@ std::vector<std::size_t> bucket_sort(std::size_t n, std::size_t n_keys, KeyOf ke
   for(std::size_t r = 0; r < n; ++r)
     order[fill[key_of(r)]++] = r;
   return order;
+}
+
+// A stable sort of one bucket: by insertion when it is small (most buckets,
+// a vertex's few halfedges or faces: std::stable_sort would take a buffer
+// from the heap for each), else std::stable_sort. Both give the one stable order.
+template <class Iterator, class Less>
+void stable_sort_bucket(Iterator first, Iterator last, Less less)
+{
+  if(last - first > 32)
+  {
+    std::stable_sort(first, last, less);
+    return;
+  }
+  for(Iterator i = first; i != last; ++i)
+  {
+    const auto x = *i;
+    Iterator j = i;
+    for(; j != first && less(x, *(j - 1)); --j)
+      *j = *(j - 1);
+    *j = x;
+  }
 }
 
 template <class Point_3>
@@ -223,12 +245,13 @@ private:
   // Rule 4 for a polygon of any size (indices in range).
   void check_no_repeated_corner() const
   {
+    std::vector<std::size_t> corners, sorted; // reused: no heap block per face
     for(std::size_t f = 0; f < nf_; ++f)
     {
-      std::vector<std::size_t> corners;
+      corners.clear();
       for(const auto raw : polygons_[f])
         corners.push_back(to_index(raw));
-      std::vector<std::size_t> sorted = corners;
+      sorted = corners;
       std::sort(sorted.begin(), sorted.end());
       const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
       if(twice == sorted.end())
@@ -334,8 +357,8 @@ private:
     std::vector<std::size_t> order = bucket_sort(nf_, nv_, [&](std::size_t f) { return sorted[3 * f]; }, begin);
     auto key = [&](std::size_t f) { return std::make_pair(sorted[3 * f + 1], sorted[3 * f + 2]); };
     for(std::size_t v = 0; v < nv_; ++v)
-      std::stable_sort(order.begin() + begin[v], order.begin() + begin[v + 1],
-                       [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+      stable_sort_bucket(order.begin() + begin[v], order.begin() + begin[v + 1],
+                         [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
     std::size_t first = invalid_index, other = invalid_index;
     for(std::size_t i = 1; i < nf_; ++i)
     {
@@ -363,8 +386,8 @@ private:
     std::vector<std::size_t> begin;
     std::vector<std::size_t> order = bucket_sort(3 * nf_, nv_, [this](std::size_t h) { return low(h); }, begin);
     for(std::size_t v = 0; v < nv_; ++v)
-      std::stable_sort(order.begin() + begin[v], order.begin() + begin[v + 1],
-                       [this](std::size_t a, std::size_t b) { return high(a) < high(b); });
+      stable_sort_bucket(order.begin() + begin[v], order.begin() + begin[v + 1],
+                         [this](std::size_t a, std::size_t b) { return high(a) < high(b); });
     return order;
   }
 
@@ -650,6 +673,27 @@ void validate_triangle_mesh(const TriangleMesh& tm,
   for(std::size_t i = 0; i < vds.size(); ++i)
     position[static_cast<std::size_t>(get(vim, vds[i]))] = i;
 
+  // Triangles (the usual case) as arrays: no heap block per face.
+  bool all_triangles = true;
+  for(auto f : faces(tm))
+  {
+    const auto h = halfedge(f, tm);
+    all_triangles = all_triangles && next(h, tm) != h && next(next(next(h, tm), tm), tm) == h;
+  }
+  if(all_triangles)
+  {
+    std::vector<std::array<std::size_t, 3>> triangles;
+    triangles.reserve(static_cast<std::size_t>(num_faces(tm)));
+    for(auto f : faces(tm))
+    {
+      const auto h = halfedge(f, tm);
+      triangles.push_back({{position[static_cast<std::size_t>(get(vim, source(h, tm)))],
+                            position[static_cast<std::size_t>(get(vim, target(h, tm)))],
+                            position[static_cast<std::size_t>(get(vim, target(next(h, tm), tm)))]}});
+    }
+    validate_triangle_soup(points, triangles);
+    return;
+  }
   std::vector<std::vector<std::size_t>> polygons;
   for(auto f : faces(tm))
   {

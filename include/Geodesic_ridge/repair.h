@@ -13,8 +13,10 @@
 #include <Geodesic_ridge/internal/soup_repair.h>
 #include <Geodesic_ridge/mesh_validation.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -208,6 +210,23 @@ Repaired_soup<Point_3> triangulate_polygons(const std::vector<Point_3>& points, 
 {
   namespace ir = internal::repair;
   internal::validation::Triangle_soup_validator<Point_3, Polygon>(points, polygons).run_polygon_rules();
+  // Only triangles (most files): the soup as it is, without the copies the
+  // triangulation works on.
+  if(std::all_of(polygons.begin(), polygons.end(), [](const Polygon& p) { return p.size() == 3; }))
+  {
+    Repaired_soup<Point_3> result;
+    result.points = points;
+    result.triangles.reserve(polygons.size());
+    for(const Polygon& p : polygons)
+      result.triangles.push_back({{static_cast<std::size_t>(p[0]), static_cast<std::size_t>(p[1]),
+                                   static_cast<std::size_t>(p[2])}});
+    result.vertex_to_file.resize(points.size());
+    std::iota(result.vertex_to_file.begin(), result.vertex_to_file.end(), std::size_t(0));
+    result.file_vertex_merged_into = result.vertex_to_file;
+    result.face_to_file.resize(polygons.size());
+    std::iota(result.face_to_file.begin(), result.face_to_file.end(), std::size_t(0));
+    return result;
+  }
   ir::Soup soup = ir::make_soup(points, ir::as_size_t<Point_3>(polygons));
   const ir::Triangulation t = ir::triangulate(points, soup);
   if(!t.failed.empty())

@@ -447,6 +447,11 @@ build_mesh(const std::string& filename, const Repaired_soup<Point>& soup, Triang
   std::pair<std::vector<typename GT::vertex_descriptor>, std::vector<typename GT::face_descriptor>> result;
   auto& vds = result.first;
   vds.reserve(soup.points.size());
+  result.second.reserve(soup.triangles.size());
+  // sized once (3F/2 edges on a closed mesh), not grown by doubling
+  reserve(tm, static_cast<typename GT::vertices_size_type>(soup.points.size()),
+          static_cast<typename GT::edges_size_type>((3 * soup.triangles.size() + 1) / 2),
+          static_cast<typename GT::faces_size_type>(soup.triangles.size()));
   for(const Point& p : soup.points)
   {
     vds.push_back(add_vertex(tm));
