@@ -666,6 +666,77 @@ TEST_CASE("file errors: malformed or truncated OFF", "[input][file][off]")
   }
 }
 
+TEST_CASE("plain OFF files are read by the fast path exactly as CGAL's reader reads them", "[input][file][off]")
+{
+  namespace mio = Geodesic_ridge::internal::mesh_io;
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  // plain files, in the forms the fast path takes
+  const std::vector<std::string> plain = {
+    to_off(tetrahedron()),
+    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces,
+    "OFF 4 4 6\n0 0 0  \n\n1 0 0\n\t0 1 0\n0 0 1" + std::string("\n") + faces + "trailing text, never read\n",
+    "OFF\r\n4 4 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n0 0 1\r\n3 0 2 1\r\n3 0 1 3\r\n3 0 3 2\r\n3 1 2 3",
+    "OFF\n5 3 0\n+1.5e-3 -.25 5.\n1E2 0.1 -0\n0.3 1e+1 7\n2.5e-320 1e-400 -4.9e-324\n.5 5 0005\n4 0 1 2 3\n3 0 2 4\n3 1 3 4\n",
+  };
+  // anything else: CGAL's reader reads it (or explains why not)
+  const std::vector<std::string> other = {
+    "# a comment\nOFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces,
+    "OFF\n4 4 0\n0 0 0 # here\n1 0 0\n0 1 0\n0 0 1\n" + faces,
+    "OFF\n4 4 0\n0 0 0 1\n1 0 0\n0 1 0\n0 0 1\n" + faces,
+    "COFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces,
+    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1 255 0 0\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 4\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n",
+    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n2 0 2\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+    "OFF\n4 4 0\n0x1 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces,
+    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1e400 0\n0 0 1\n" + faces,
+    "OFF\n4 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces,
+  };
+  Temp_dir dir;
+  auto same_as_cgal = [&](const std::string& path) {
+    std::vector<Point_3> points, cgal_points;
+    std::vector<std::vector<std::size_t>> polygons, cgal_polygons;
+    const bool plain_read = mio::read_plain_OFF(path, points, polygons);
+    if(plain_read)
+    {
+      REQUIRE(CGAL::IO::read_polygon_soup(path, cgal_points, cgal_polygons, CGAL::parameters::verbose(false)));
+      REQUIRE(points.size() == cgal_points.size());
+      for(std::size_t i = 0; i < points.size(); ++i)
+        for(int k = 0; k < 3; ++k)
+        {
+          const double a = points[i][k], b = cgal_points[i][k];
+          CHECK(std::memcmp(&a, &b, sizeof a) == 0);
+        }
+      CHECK(polygons == cgal_polygons);
+    }
+    else
+      CHECK((points.empty() && polygons.empty()));
+    return plain_read;
+  };
+  for(const std::string& content : plain)
+  {
+    INFO(content);
+    CHECK(same_as_cgal(dir.write("plain.off", content)));
+  }
+  for(const std::string& content : other)
+  {
+    INFO(content);
+    CHECK_FALSE(same_as_cgal(dir.write("other.off", content)));
+  }
+  for(const fs::path& data_dir : {fs::path(GEODESIC_RIDGE_DATA_DIR), fs::path(GEODESIC_RIDGE_DATA_DIR) / "boundary",
+                                  fs::path(GEODESIC_RIDGE_SHARED_DATA_DIR)})
+  {
+    if(!fs::is_directory(data_dir))
+      continue;
+    for(const auto& entry : fs::directory_iterator(data_dir))
+      if(entry.path().extension() == ".off" && fs::file_size(entry.path()) < 2000000)
+      {
+        INFO(entry.path().string());
+        same_as_cgal(entry.path().string());
+      }
+  }
+}
+
 TEST_CASE("file errors: malformed OBJ, including what CGAL's reader silently accepts", "[input][file][obj]")
 {
   const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";

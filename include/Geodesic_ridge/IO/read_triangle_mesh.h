@@ -26,11 +26,13 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -223,6 +225,122 @@ bool diagnose_OFF(const std::string& filename, std::vector<Point>& points,
   return true;
 }
 
+// The plainest ASCII OFF files (most files): "OFF", the three counts on one
+// line, then one vertex per line (three numbers) and one face per line (its
+// size, at least 3, then as many indices below the vertex count), no comment.
+// They are read as CGAL's reader reads them: every number is parsed as it
+// does (`sscanf("%lf")`, that is `strtod`, on a token of digits, a point, an
+// exponent and signs; an overflow is left to it), lines after the last face
+// are not read. CGAL's reader
+// makes a string stream per line, which costs more than everything else the
+// package does with the mesh; this takes a fraction of it. Returns false,
+// with the soup cleared, for any other file (comments, colors, normals,
+// binary, a short file, an index out of range, anything unexpected): CGAL's
+// reader then reads it as before.
+template <class Point>
+bool read_plain_OFF(const std::string& filename, std::vector<Point>& points,
+                    std::vector<std::vector<std::size_t>>& polygons)
+{
+  std::ifstream in(filename, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if(in.bad())
+    return false;
+  const char* p = text.c_str();
+  const char* const end = p + text.size();
+  // CGAL skips std::isspace between lines; inside a line, every one but the newline
+  auto is_blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
+  auto is_digit = [](char c) { return c >= '0' && c <= '9'; };
+  auto skip_spaces = [&] { while(p != end && (is_blank(*p) || *p == '\n')) ++p; };
+  // the tokens of the line at p (none if it has a comment); p moves past it
+  std::vector<std::pair<const char*, const char*>> tokens;
+  auto read_line = [&]() -> bool {
+    tokens.clear();
+    while(p != end && *p != '\n')
+    {
+      if(*p == '#')
+        return false;
+      if(is_blank(*p)) { ++p; continue; }
+      const char* first = p;
+      while(p != end && *p != '\n' && !is_blank(*p) && *p != '#') ++p;
+      tokens.emplace_back(first, p);
+    }
+    return true;
+  };
+  // an unsigned integer of at most 9 digits (CGAL reads it as a double, then casts it)
+  auto integer = [&](const std::pair<const char*, const char*>& t, std::size_t& value) -> bool {
+    if(t.second - t.first > 9) return false;
+    value = 0;
+    for(const char* c = t.first; c != t.second; ++c)
+    {
+      if(!is_digit(*c)) return false;
+      value = 10 * value + static_cast<std::size_t>(*c - '0');
+    }
+    return true;
+  };
+  // [+-]digits[.digits][(e|E)[+-]digits], the integer or the fraction part possibly empty, not both
+  auto number = [&](const std::pair<const char*, const char*>& t, double& value) -> bool {
+    const char* c = t.first;
+    if(c != t.second && (*c == '+' || *c == '-')) ++c;
+    std::size_t digits = 0;
+    for(; c != t.second && is_digit(*c); ++c) ++digits;
+    if(c != t.second && *c == '.')
+      for(++c; c != t.second && is_digit(*c); ++c) ++digits;
+    if(digits == 0) return false;
+    if(c != t.second && (*c == 'e' || *c == 'E'))
+    {
+      ++c;
+      if(c != t.second && (*c == '+' || *c == '-')) ++c;
+      if(c == t.second || !is_digit(*c)) return false;
+      while(c != t.second && is_digit(*c)) ++c;
+    }
+    if(c != t.second) return false;
+    char* stop = nullptr;
+    value = std::strtod(t.first, &stop); // stops at the blank, newline or NUL after the token
+    return stop == t.second && std::isfinite(value); // CGAL's reader rejects an overflow
+  };
+  auto fail = [&] {
+    points.clear();
+    polygons.clear();
+    return false;
+  };
+
+  // "OFF", whitespace, then the counts on one line (as CGAL: the edge count unused)
+  if(text.size() < 4 || text.compare(0, 3, "OFF") != 0 || !(is_blank(text[3]) || text[3] == '\n'))
+    return false;
+  p += 3;
+  skip_spaces();
+  std::size_t nv = 0, nf = 0, ne = 0;
+  if(!read_line() || tokens.size() != 3 || !integer(tokens[0], nv) || !integer(tokens[1], nf) ||
+     !integer(tokens[2], ne) || nv == 0 || nf == 0 || p == end)
+    return false;
+  points.clear();
+  polygons.clear();
+  points.reserve((std::min)(nv, text.size()));
+  polygons.reserve((std::min)(nf, text.size()));
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    skip_spaces();
+    std::array<double, 3> x;
+    if(p == end || !read_line() || tokens.size() != 3 || !number(tokens[0], x[0]) || !number(tokens[1], x[1]) ||
+       !number(tokens[2], x[2]))
+      return fail();
+    points.emplace_back();
+    CGAL::IO::internal::fill_point(x[0], x[1], x[2], 1.0, points.back());
+  }
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    skip_spaces();
+    std::size_t n = 0;
+    if(p == end || !read_line() || tokens.empty() || !integer(tokens[0], n) || n < 3 || tokens.size() != n + 1)
+      return fail();
+    polygons.emplace_back(n);
+    for(std::size_t k = 0; k < n; ++k)
+      if(!integer(tokens[k + 1], polygons.back()[k]) || polygons.back()[k] >= nv)
+        return fail();
+  }
+  return true;
+}
+
 // Reads an OBJ file strictly. CGAL's OBJ reader silently drops a face token
 // that is not a number ("f 1 2 x" gives a 2-gon) and maps the invalid index 0
 // to a vertex defined later in the file: we run this parser on every OBJ file
@@ -355,6 +473,8 @@ void read_polygon_soup_or_throw(const std::string& filename, std::vector<Point>&
     ply::read(filename, points, polygons); // triangle strips, or 8- and 16-bit indices
     return;
   }
+  if(format == Mesh_file_format::OFF && read_plain_OFF(filename, points, polygons))
+    return;
   // verbose(false): some of CGAL's readers print to std::cerr by default; we
   // report through the exception only.
   if(CGAL::IO::read_polygon_soup(filename, points, polygons, CGAL::parameters::verbose(false)))
