@@ -231,13 +231,19 @@ namespace internal {
 
 // Per face of M, the copies of E whose three corner distances (`corners`, per
 // face of E) are not all >= those of another copy (a dominated copy never
-// wins, paper §3.2.2).
+// wins, paper §3.2.2). Into `face_copies`, whose arrays are emptied, not
+// freed: every pass fills them again.
 template <class Point>
-std::vector<Face_copies> undominated_copies(const Extended_surface<Point>& E,
-                                            const std::vector<std::array<double, 3> >& corners,
-                                            std::size_t number_of_faces)
+void undominated_copies(const Extended_surface<Point>& E, const std::vector<std::array<double, 3> >& corners,
+                        std::size_t number_of_faces, std::vector<Face_copies>& face_copies)
 {
-  std::vector<Face_copies> face_copies(number_of_faces);
+  face_copies.resize(number_of_faces);
+  for(Face_copies& fc : face_copies)
+  {
+    fc.copies.clear();
+    fc.fields.clear();
+    fc.split.clear();
+  }
   for(std::size_t c = 0; c < corners.size(); ++c)
   {
     const std::array<double, 3>& d = corners[c];
@@ -259,7 +265,6 @@ std::vector<Face_copies> undominated_copies(const Extended_surface<Point>& E,
     fc.fields.push_back(d);
     fc.copies.push_back(c);
   }
-  return face_copies;
 }
 
 // Whether the linear function c (values c0, c1 at the ends of an edge) comes
@@ -579,7 +584,7 @@ private:
     if(analysed_) return;
     timings_.time("envelope_and_dominance", [&] {
       corners_ = corner_distances(E_, distance_);
-      face_copies_ = undominated_copies(E_, corners_, num_faces(tm_));
+      undominated_copies(E_, corners_, num_faces(tm_), face_copies_);
       const double slack = pass_ == Pass::solve && solver_is_exact ? exact_slack_ : fast_marching_slack_;
       grow_from_ = copies_winning_on_border(across_, E_, face_copies_, slack);
       winning_ = static_cast<std::size_t>(std::count(grow_from_.begin(), grow_from_.end(), 1));
@@ -714,11 +719,13 @@ public:
       std::vector<std::array<double, 3> >().swap(own_angles_.angle);
     });
     mean_edge_ = mean_edge_length();
-    Builder builder(tm_, result_.rough_cut_locus, maps_);
-    timings_.time("extended_surface", [&] {
-      for(int r = 0; r < options_.initial_rings; ++r) builder.grow_ring();
-    });
-    grow_and_solve(builder);
+    { // the builder's arrays are freed before the assembly, the peak of memory
+      Builder builder(tm_, result_.rough_cut_locus, maps_);
+      timings_.time("extended_surface", [&] {
+        for(int r = 0; r < options_.initial_rings; ++r) builder.grow_ring();
+      });
+      grow_and_solve(builder);
+    }
     timings_.time("ridge_assembly", [&] { assemble_ridge(); });
     check_ridge_topology();
     if(options_.field == Field::cone) timings_.time("cone_ridge", [&] { trace_cones(); });
