@@ -314,9 +314,10 @@ private:
   bool parents_form_a_tree() const
   {
     std::vector<char> state(nv_, 0); // 0 unknown, 1 in progress, 2 reaches a root
+    std::vector<std::size_t> path;   // (reused: no heap block per vertex)
     for(vertex_descriptor v : vertices(tm_))
     {
-      std::vector<std::size_t> path;
+      path.clear();
       std::size_t x = vi(v);
       while(state[x] == 0 && !is_seed_[x])
       {
