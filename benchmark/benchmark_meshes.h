@@ -33,13 +33,13 @@ inline std::vector<std::string> benchmark_meshes(std::vector<std::string> files)
 /// schedules can be compared on the same meshes:
 ///   --initial-rings K --extension-step K --maximum-rings K --maximum-solves K
 ///   --spur-angle DEG --tree-from-solver 0|1 --predicted 0|1
-///   --leaf-curvature DEG --branch-curvature DEG --kink-angle DEG
+///   --leaf-curvature DEG --branch-curvature DEG --kink-angle DEG --corner-fallback 0|1
 struct Pipeline_options
 {
   int initial_rings = Geodesic_ridge::default_initial_rings, extension_step = Geodesic_ridge::default_extension_step,
       maximum_rings = Geodesic_ridge::default_maximum_rings,
       maximum_solves = Geodesic_ridge::default_maximum_solves;
-  bool tree_from_solver = false, predicted = true;
+  bool tree_from_solver = false, predicted = true, corner_fallback = false;
   double spur_angle = Geodesic_ridge::default_minimum_spur_angle,
          leaf_curvature = Geodesic_ridge::default_leaf_curvature, kink_angle = Geodesic_ridge::default_kink_angle,
          branch_curvature = Geodesic_ridge::default_branch_curvature;
@@ -58,6 +58,7 @@ struct Pipeline_options
     else if(a == "--tree-from-solver") tree_from_solver = std::stoi(argv[++i]) != 0;
     else if(a == "--spur-angle") spur_angle = std::stod(argv[++i]);
     else if(a == "--kink-angle") kink_angle = std::stod(argv[++i]);
+    else if(a == "--corner-fallback") corner_fallback = std::stoi(argv[++i]) != 0;
     else if(a == "--branch-curvature") branch_curvature = std::stod(argv[++i]);
     else return false;
     return true;
@@ -69,7 +70,8 @@ struct Pipeline_options
     return p::tolerance(tolerance, p::initial_rings(initial_rings, p::extension_step(extension_step,
            p::maximum_rings(maximum_rings, p::maximum_solves(maximum_solves,
            p::minimum_spur_angle(spur_angle, p::tree_from_solver(tree_from_solver, p::predicted_extension(predicted,
-           p::leaf_curvature(leaf_curvature, p::branch_curvature(branch_curvature, p::kink_angle(kink_angle)))))))))));
+           p::leaf_curvature(leaf_curvature, p::branch_curvature(branch_curvature, p::kink_angle(kink_angle,
+           p::corner_fallback(corner_fallback))))))))))));
   }
 };
 

@@ -220,17 +220,19 @@ TEST_CASE("ridge accuracy against the exact reference ridge", "[ridge_accuracy]"
 // whose major ridge was missed at tolerance 0.002 before the copies were split
 // at such kinks (recall p95, mean edges): armadillo_2k v0 1.78, v792 1.12;
 // bunny_1k v251 1.34 and the random point f434 0.58 (1.11 while the split
-// fronts were still glued to their neighbours by the gradient test). Still
-// missed (issue 10, open): armadillo_2k v648 3.54 (its kink has corners whose
-// front no sample's cone gives).
+// fronts were still glued to their neighbours by the gradient test). With
+// parameters::corner_fallback (a sample nearer to each corner, where the kink
+// passes between the corner and its first sample, so that no sample's cone
+// gives the corner's front): armadillo_2k v648 3.54 without it.
 TEST_CASE("kinks inside one sheet: the major ridge at a small tolerance", "[ridge_accuracy]")
 {
   const GT::Reference_ridge_options ropt = reference_options();
-  auto check = [&](const Mesh& m, const auto& source, const std::string& what) {
+  auto check = [&](const Mesh& m, const auto& source, const std::string& what, bool fallback = false) {
     INFO(what);
     const auto ref = GT::reference_ridge(m, source, ropt);
     REQUIRE(ref.failed_samples == 0);
-    const auto rc = Geodesic_ridge::compute_ridge_curve(m, source, Geodesic_ridge::parameters::tolerance(0.002));
+    const auto rc = Geodesic_ridge::compute_ridge_curve(
+        m, source, Geodesic_ridge::parameters::tolerance(0.002, Geodesic_ridge::parameters::corner_fallback(fallback)));
     const auto acc = GT::ridge_accuracy(ref, rc.polylines, ropt);
     std::cout << std::setprecision(3) << "kinks inside one sheet, " << what << ": split copies "
               << rc.statistics.ridge.split_copies << ", recall p95 " << acc.recall_p95 << ", precision p95 "
@@ -243,6 +245,7 @@ TEST_CASE("kinks inside one sheet: the major ridge at a small tolerance", "[ridg
   const Mesh armadillo = load("armadillo_2k.off");
   for(const std::size_t v : {0, 792})
     check(armadillo, Mesh::Vertex_index(static_cast<Mesh::size_type>(v)), "armadillo_2k v" + std::to_string(v));
+  check(armadillo, Mesh::Vertex_index(648), "armadillo_2k v648 with the corner fallback", true);
   const Mesh bunny = load("bunny_1k.off");
   check(bunny, Mesh::Vertex_index(251), "bunny_1k v251");
   // the second of bench_ridge_accuracy's random points (seed 1 + F)

@@ -640,21 +640,25 @@ TEST_CASE("a copy is split at a kink between its corners' fronts", "[ridge_curve
   auto distance_to = [&](int k, double x, double y) {
     return std::sqrt(CGAL::to_double(CGAL::squared_distance(corner[k], Point_3(x, y, 0))));
   };
-  const auto& samples = Geodesic_ridge::Exact_solver::corner_samples();
+  const auto& samples = Geodesic_ridge::Exact_solver::corner_fallback_samples();
   // fronts from the left (apex (-2, 0)) and from above (apex (0, 3)): they
   // arrive at the centroid 91 degrees apart; a third front from (-2, 0.3) is
   // the first one's neighbour (5 degrees)
   struct Front { double x, y; };
-  auto run = [&](const std::array<Front, 3>& front_of_corner) {
+  // front_of_sample[k]: the front of the first sample of corner k (sample k);
+  // the fallback sample of corner k (sample 3 + k) has the corner's own front
+  auto run = [&](const std::array<Front, 3>& front_of_corner, std::array<Front, 3> front_of_sample) {
+    REQUIRE(samples.size() == 6);
     std::vector<Geodesic_ridge::internal::Face_copies> copies(1);
     std::vector<Geodesic_ridge::Face_cone> cones(samples.size());
     std::array<double, 3> d;
     for(int k = 0; k < 3; ++k)
     {
       d[k] = distance_to(k, front_of_corner[k].x, front_of_corner[k].y);
-      // the sample nearest to corner k is sample k
-      cones[k].apex = barycentric(front_of_corner[k].x, front_of_corner[k].y);
+      cones[k].apex = barycentric(front_of_sample[k].x, front_of_sample[k].y);
       cones[k].offset = 0;
+      cones[3 + k].apex = barycentric(front_of_corner[k].x, front_of_corner[k].y);
+      cones[3 + k].offset = 0;
     }
     copies[0].copies = {0};
     copies[0].fields = {d};
@@ -666,7 +670,7 @@ TEST_CASE("a copy is split at a kink between its corners' fronts", "[ridge_curve
     E.original_vertex = {0, 1, 2};
     const Geodesic_ridge::internal::Kink_splitter<Mesh, decltype(get(CGAL::vertex_point, m)),
                                                   decltype(get(CGAL::face_index, m)), Point_3>
-        splitter(m, get(CGAL::vertex_point, m), get(CGAL::face_index, m), E, cones, samples, 60.0, 1.0);
+        splitter(m, get(CGAL::vertex_point, m), get(CGAL::face_index, m), E, cones, samples, 60.0, 1.0, true);
     const auto out = splitter(copies, split);
     REQUIRE(out.size() == 1);
     REQUIRE(out[0].copies.size() == out[0].fields.size());
@@ -692,24 +696,38 @@ TEST_CASE("a copy is split at a kink between its corners' fronts", "[ridge_curve
       fronts[k] = corner[k].y() == 1 ? above : left;
       if(corner[k].y() == 1) top = k;
     }
-    const auto [out, split] = run(fronts);
-    CHECK(split == 1);
-    REQUIRE(out.fields.size() == 2);
     // each front's field is its cone at the corners it does not reach
-    const std::size_t from_left = out.fields[0][top] > out.fields[1][top] ? 0 : 1;
-    for(int k = 0; k < 3; ++k)
+    auto check_fields = [&](const Geodesic_ridge::internal::Face_copies& out) {
+      REQUIRE(out.fields.size() == 2);
+      const std::size_t from_left = out.fields[0][top] > out.fields[1][top] ? 0 : 1;
+      for(int k = 0; k < 3; ++k)
+      {
+        CHECK(out.fields[from_left][k] == Approx(distance_to(k, left.x, left.y)));
+        CHECK(out.fields[1 - from_left][k] == Approx(distance_to(k, above.x, above.y)));
+      }
+    };
     {
-      CHECK(out.fields[from_left][k] == Approx(distance_to(k, left.x, left.y)));
-      CHECK(out.fields[1 - from_left][k] == Approx(distance_to(k, above.x, above.y)));
+      const auto [out, split] = run(fronts, fronts);
+      CHECK(split == 1);
+      check_fields(out);
+    }
+    {
+      // the kink passes between the top corner and its first sample: that
+      // sample has the front from the left, which is not exact at the corner;
+      // the corner's fallback sample gives its front
+      const auto [out, split] = run(fronts, {{left, left, left}});
+      CHECK(split == 1);
+      check_fields(out);
     }
   }
   {
-    const auto [out, split] = run({{left, left, left}}); // one front
+    const auto [out, split] = run({{left, left, left}}, {{left, left, left}}); // one front
     CHECK(split == 0);
     CHECK(out.fields.size() == 1);
   }
   {
-    const auto [out, split] = run({{left, left_too, left}}); // two fronts, 5 degrees apart: no kink
+    // two fronts, 5 degrees apart: no kink
+    const auto [out, split] = run({{left, left_too, left}}, {{left, left_too, left}});
     CHECK(split == 0);
     CHECK(out.fields.size() == 1);
   }

@@ -381,18 +381,28 @@ private:
     }
   }
 
-  // the output vertex at a ridge point (rounded coordinates), if any
-  out_vertex rounded_vertex(const Ridge_point<Point>& p) const
+  // the output vertices at a ridge point (rounded coordinates): one, or
+  // several where the two faces of an edge put exact points on it that differ
+  // below the rounding (the fields of copies split at a kink need not agree
+  // along their edges)
+  std::vector<out_vertex> rounded_vertices(const Ridge_point<Point>& p) const
   {
     const auto& l = p.barycentric;
     const int feature = feature_of(l);
     const auto h = faces_.corner_halfedges(p.face);
-    if(feature >= 3) return vertex_of_mesh_vertex_[get(maps_.vim, source(h[feature - 3], tm_))];
+    std::vector<out_vertex> out;
+    if(feature >= 3)
+    {
+      const out_vertex v = vertex_of_mesh_vertex_[get(maps_.vim, source(h[feature - 3], tm_))];
+      if(v != OGT::null_vertex()) out.push_back(v);
+      return out;
+    }
     const Rounded_point_key key = feature >= 0
         ? Rounded_point_key(1, edge_index(p.face, feature), edge_parameter(p.face, feature, l), 0.)
         : Rounded_point_key(2, p.face, l[1], l[2]);
-    const auto it = vertex_of_rounded_.find(key);
-    return it == vertex_of_rounded_.end() ? OGT::null_vertex() : it->second;
+    const auto range = vertex_of_rounded_.equal_range(key);
+    for(auto it = range.first; it != range.second; ++it) out.push_back(it->second);
+    return out;
   }
 
   bool mark(out_vertex a, out_vertex b)
@@ -412,18 +422,29 @@ private:
     for(const auto& polyline : ridge_.polylines)
       for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
       {
-        const out_vertex a = rounded_vertex(polyline[i]), b = rounded_vertex(polyline[i + 1]);
-        bool found = a != OGT::null_vertex() && b != OGT::null_vertex();
-        if(found && a == b) continue; // a segment shorter than the rounding: nothing to mark
-        if(found && !mark(a, b))
-        {
-          const auto it = chain_of_side_.find(a < b ? std::make_pair(a, b) : std::make_pair(b, a));
-          found = it != chain_of_side_.end();
-          if(found)
-            for(std::size_t j = 0; j + 1 < it->second.size(); ++j) found = mark(it->second[j], it->second[j + 1]) && found;
-        }
-        if(!found) ++st_.unmatched_ridge_segments;
+        const std::vector<out_vertex> as = rounded_vertices(polyline[i]), bs = rounded_vertices(polyline[i + 1]);
+        bool found = false, same = false;
+        for(const out_vertex a : as)
+          for(const out_vertex b : bs)
+          {
+            same = same || a == b;
+            if(!found && a != b) found = mark_segment(a, b);
+          }
+        // else a segment shorter than the rounding: nothing to mark
+        if(!found && !same) ++st_.unmatched_ridge_segments;
       }
+  }
+
+  // the ridge segment between output vertices a != b, if it is an edge or a
+  // side's chain
+  bool mark_segment(out_vertex a, out_vertex b)
+  {
+    if(mark(a, b)) return true;
+    const auto it = chain_of_side_.find(a < b ? std::make_pair(a, b) : std::make_pair(b, a));
+    if(it == chain_of_side_.end()) return false;
+    bool found = true;
+    for(std::size_t j = 0; j + 1 < it->second.size(); ++j) found = mark(it->second[j], it->second[j + 1]) && found;
+    return found;
   }
 
   const TriangleMesh& tm_;
@@ -442,7 +463,7 @@ private:
   std::vector<std::vector<Q> > edge_points_; // per edge: exact t of cell corners inside it
   std::vector<out_vertex> vertex_of_mesh_vertex_;
   std::map<Exact_point_key, out_vertex> vertex_of_point_;
-  std::map<Rounded_point_key, out_vertex> vertex_of_rounded_; // to find the ridge's points
+  std::multimap<Rounded_point_key, out_vertex> vertex_of_rounded_; // to find the ridge's points
   std::map<out_vertex, std::pair<double, double> > value_range_; // smallest and largest value given
   std::map<std::pair<out_vertex, out_vertex>, std::vector<out_vertex> > chain_of_side_; // sides that got points
 };

@@ -148,10 +148,16 @@ struct Face_copies
 // cone in the face's plane, and its offset):
 //  1. the fronts of a copy are those of its samples' cones; each corner
 //     belongs to the front whose cone there is nearest to the copy's distance,
-//     and that cone must give the distance there (within round-off): else the
-//     copy stays whole. Measured (bench_ridge_accuracy, 168 pairs): with a
-//     guessed front at such corners recall improves on 1 more pair but the
-//     ridge refinement meets envelope pieces it cannot match;
+//     and that cone must give the distance there (within round-off). Where no
+//     sample's cone does (the kink passes between the corner and its sample),
+//     with the corner fallback and the copy alone in its face, the corner's
+//     fallback sample, nearer to it, gives its front; without an exact front
+//     the copy stays whole. Only alone: where fronts of other sheets meet the
+//     copy, a split raises its field (each split field is at least the copy's
+//     linear one) and moves the ridge between the sheets; measured
+//     (bench_ridge_accuracy, 168 pairs), the fallback in every face loses a
+//     14-edge branch on kitten_5k v1250. With a guessed front at such corners,
+//     the ridge refinement met envelope pieces it could not match;
 //  2. a copy whose corners belong to fronts that arrive at the face's centroid
 //     `split_angle` or more apart becomes one copy per front, with the field of
 //     its cone at the corners (never below the copy's distance there, and
@@ -164,6 +170,9 @@ struct Face_copies
 //     lies beyond it, until it ends or meets the ridge.
 // `cones[S * copy + i]` is the cone of copy `copy` (a face of E) at sample i of
 // `samples`; copies without cones (a source or apex at a sample) stay whole.
+// With `corner_fallback` (`parameters::corner_fallback`), the last three
+// samples are the fallbacks of corners 0, 1 and 2
+// (`Exact_solver::corner_fallback_samples()`), the others those of step 1.
 template <class TriangleMesh, class VertexPointMap, class FaceIndexMap, class Point>
 class Kink_splitter
 {
@@ -180,9 +189,10 @@ class Kink_splitter
 public:
   Kink_splitter(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim, const Extended_surface<Point>& E,
                 const std::vector<Face_cone>& cones, const std::vector<std::array<double, 3> >& samples,
-                double split_angle, double mean_edge)
-      : faces_(tm, vpm, fim), E_(E), cones_(cones), samples_(samples), split_angle_(split_angle),
-        same_apex_(1e-6 * mean_edge) // round-off of the unfolding
+                double split_angle, double mean_edge, bool corner_fallback = false)
+      : faces_(tm, vpm, fim), E_(E), cones_(cones), samples_(samples),
+        first_fallback_(corner_fallback && samples.size() >= 3 ? samples.size() - 3 : samples.size()),
+        split_angle_(split_angle), same_apex_(1e-6 * mean_edge) // round-off of the unfolding
   {}
 
   std::vector<Face_copies> operator()(const std::vector<Face_copies>& face_copies, std::size_t& split_count) const
@@ -194,7 +204,8 @@ public:
       {
         Split x;
         const std::size_t c = face_copies[f].copies[j];
-        if(!sample_fronts(f, c, x.fronts) || !kinked(f, face_copies[f].fields[j], x)) continue;
+        const bool alone = face_copies[f].copies.size() == 1;
+        if(!sample_fronts(f, c, x.fronts) || !kinked(f, c, face_copies[f].fields[j], alone, x)) continue;
         split.emplace(c, x);
         queue.push_back(c);
       }
@@ -216,7 +227,7 @@ public:
         const Split& from = split.at(c);
         Split x;
         for(const Front& y : from.fronts) x.fronts.push_back(unfolded(y, f, k, n));
-        if(!sample_fronts(n, g, x.fronts) || !kinked(n, d, x)) continue;
+        if(!sample_fronts(n, g, x.fronts) || !kinked(n, g, d, fc.copies.size() == 1, x)) continue;
         split.emplace(g, x);
         queue.push_back(g);
       }
@@ -246,27 +257,39 @@ public:
   }
 
 private:
-  void add_front(const Front& x, std::vector<Front>& fronts) const
+  // the index of front x in `fronts`, where it is added unless it is there
+  std::size_t add_front(const Front& x, std::vector<Front>& fronts) const
   {
-    for(const Front& y : fronts)
-      if(std::sqrt(CGAL::to_double(CGAL::squared_distance(x.apex, y.apex))) <= same_apex_ &&
-         std::abs(x.offset - y.offset) <= same_apex_)
-        return;
+    for(std::size_t i = 0; i < fronts.size(); ++i)
+      if(std::sqrt(CGAL::to_double(CGAL::squared_distance(x.apex, fronts[i].apex))) <= same_apex_ &&
+         std::abs(x.offset - fronts[i].offset) <= same_apex_)
+        return i;
     fronts.push_back(x);
+    return fronts.size() - 1;
   }
 
-  // step 1: the fronts of copy c's samples in face f; false without cones
-  bool sample_fronts(std::size_t f, std::size_t c, std::vector<Front>& fronts) const
+  // the front of copy c's sample i in face f; false without one (a source or
+  // no path at the sample, or its cone not read: not near a kink)
+  bool sample_front(std::size_t f, std::size_t c, std::size_t i, Front& x) const
   {
     const std::size_t S = samples_.size();
     if(S * (c + 1) > cones_.size()) return false;
+    const Face_cone& cone = cones_[S * c + i];
+    if(cone.apex == samples_[i] || std::abs(cone.apex[0] + cone.apex[1] + cone.apex[2] - 1) > 0.5) return false;
     const auto p = faces_.corner_points(f);
-    for(std::size_t i = 0; i < S; ++i)
+    x = Front{barycentric_to_point(cone.apex, p[0], p[1], p[2]), cone.offset};
+    return true;
+  }
+
+  // step 1: the fronts of copy c's samples in face f (not the fallbacks);
+  // false without cones
+  bool sample_fronts(std::size_t f, std::size_t c, std::vector<Front>& fronts) const
+  {
+    for(std::size_t i = 0; i < first_fallback_; ++i)
     {
-      const Face_cone& cone = cones_[S * c + i];
-      // no apex (a source or no path), or not read (not near a kink)
-      if(cone.apex == samples_[i] || std::abs(cone.apex[0] + cone.apex[1] + cone.apex[2] - 1) > 0.5) return false;
-      add_front(Front{barycentric_to_point(cone.apex, p[0], p[1], p[2]), cone.offset}, fronts);
+      Front x;
+      if(!sample_front(f, c, i, x)) return false;
+      add_front(x, fronts);
     }
     return true;
   }
@@ -287,16 +310,24 @@ private:
     return owner;
   }
 
-  // step 2's test: the corners' fronts (each exact at its corner) arrive
-  // split_angle apart; sets x.owner
-  bool kinked(std::size_t f, const std::array<double, 3>& d, Split& x) const
+  // step 2's test: the corners' fronts (each exact at its corner; for a copy
+  // c alone in face f, from the corner's fallback sample where no front is)
+  // arrive split_angle apart; sets x.owner
+  bool kinked(std::size_t f, std::size_t c, const std::array<double, 3>& d, bool alone, Split& x) const
   {
-    if(x.fronts.size() < 2) return false;
     const auto p = faces_.corner_points(f);
-    const Point centroid = CGAL::centroid(p[0], p[1], p[2]);
     x.owner = owners(f, d, x.fronts);
     for(int k = 0; k < 3; ++k)
-      if(!(std::abs(cone_at(x.fronts[x.owner[k]], p[k]) - d[k]) <= same_apex_)) return false;
+    {
+      auto exact = [&](std::size_t i) { return std::abs(cone_at(x.fronts[i], p[k]) - d[k]) <= same_apex_; };
+      if(exact(x.owner[k])) continue;
+      Front y;
+      if(!alone || first_fallback_ == samples_.size() || !sample_front(f, c, first_fallback_ + k, y)) return false;
+      x.owner[k] = add_front(y, x.fronts);
+      if(!exact(x.owner[k])) return false;
+    }
+    if(x.fronts.size() < 2) return false;
+    const Point centroid = CGAL::centroid(p[0], p[1], p[2]);
     for(int k = 0; k < 3; ++k)
     {
       const Vector u = centroid - x.fronts[x.owner[k]].apex, v = centroid - x.fronts[x.owner[(k + 1) % 3]].apex;
@@ -353,6 +384,7 @@ private:
   const Extended_surface<Point>& E_;
   const std::vector<Face_cone>& cones_;
   const std::vector<std::array<double, 3> >& samples_;
+  std::size_t first_fallback_; // samples from here on: one per corner
   double split_angle_, same_apex_;
 };
 
