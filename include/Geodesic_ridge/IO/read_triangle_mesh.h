@@ -237,6 +237,49 @@ bool diagnose_OFF(const std::string& filename, std::vector<Point>& points,
 // with the soup cleared, for any other file (comments, colors, normals,
 // binary, a short file, an index out of range, anything unexpected): CGAL's
 // reader then reads it as before.
+typedef std::pair<const char*, const char*> Plain_OFF_token;
+
+// A token of a plain OFF file as an unsigned integer of at most 9 digits
+// (CGAL reads it as a double, then casts it).
+inline bool plain_OFF_integer(const Plain_OFF_token& t, std::size_t& value)
+{
+  if(t.second - t.first > 9) return false;
+  value = 0;
+  for(const char* c = t.first; c != t.second; ++c)
+  {
+    if(*c < '0' || *c > '9') return false;
+    value = 10 * value + static_cast<std::size_t>(*c - '0');
+  }
+  return true;
+}
+
+// A token of a plain OFF file as a number:
+// [+-]digits[.digits][(e|E)[+-]digits], the integer or the fraction part
+// possibly empty, not both; the token must be followed by a blank, newline or
+// NUL (strtod stops there).
+inline bool plain_OFF_number(const Plain_OFF_token& t, double& value)
+{
+  auto is_digit = [](char c) { return c >= '0' && c <= '9'; };
+  const char* c = t.first;
+  if(c != t.second && (*c == '+' || *c == '-')) ++c;
+  std::size_t digits = 0;
+  for(; c != t.second && is_digit(*c); ++c) ++digits;
+  if(c != t.second && *c == '.')
+    for(++c; c != t.second && is_digit(*c); ++c) ++digits;
+  if(digits == 0) return false;
+  if(c != t.second && (*c == 'e' || *c == 'E'))
+  {
+    ++c;
+    if(c != t.second && (*c == '+' || *c == '-')) ++c;
+    if(c == t.second || !is_digit(*c)) return false;
+    while(c != t.second && is_digit(*c)) ++c;
+  }
+  if(c != t.second) return false;
+  char* stop = nullptr;
+  value = std::strtod(t.first, &stop);
+  return stop == t.second && std::isfinite(value); // CGAL's reader rejects an overflow
+}
+
 template <class Point>
 bool read_plain_OFF(const std::string& filename, std::vector<Point>& points,
                     std::vector<std::vector<std::size_t>>& polygons)
@@ -249,7 +292,6 @@ bool read_plain_OFF(const std::string& filename, std::vector<Point>& points,
   const char* const end = p + text.size();
   // CGAL skips std::isspace between lines; inside a line, every one but the newline
   auto is_blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
-  auto is_digit = [](char c) { return c >= '0' && c <= '9'; };
   auto skip_spaces = [&] { while(p != end && (is_blank(*p) || *p == '\n')) ++p; };
   // the tokens of the line at p (none if it has a comment); p moves past it
   std::vector<std::pair<const char*, const char*>> tokens;
@@ -266,38 +308,6 @@ bool read_plain_OFF(const std::string& filename, std::vector<Point>& points,
     }
     return true;
   };
-  // an unsigned integer of at most 9 digits (CGAL reads it as a double, then casts it)
-  auto integer = [&](const std::pair<const char*, const char*>& t, std::size_t& value) -> bool {
-    if(t.second - t.first > 9) return false;
-    value = 0;
-    for(const char* c = t.first; c != t.second; ++c)
-    {
-      if(!is_digit(*c)) return false;
-      value = 10 * value + static_cast<std::size_t>(*c - '0');
-    }
-    return true;
-  };
-  // [+-]digits[.digits][(e|E)[+-]digits], the integer or the fraction part possibly empty, not both
-  auto number = [&](const std::pair<const char*, const char*>& t, double& value) -> bool {
-    const char* c = t.first;
-    if(c != t.second && (*c == '+' || *c == '-')) ++c;
-    std::size_t digits = 0;
-    for(; c != t.second && is_digit(*c); ++c) ++digits;
-    if(c != t.second && *c == '.')
-      for(++c; c != t.second && is_digit(*c); ++c) ++digits;
-    if(digits == 0) return false;
-    if(c != t.second && (*c == 'e' || *c == 'E'))
-    {
-      ++c;
-      if(c != t.second && (*c == '+' || *c == '-')) ++c;
-      if(c == t.second || !is_digit(*c)) return false;
-      while(c != t.second && is_digit(*c)) ++c;
-    }
-    if(c != t.second) return false;
-    char* stop = nullptr;
-    value = std::strtod(t.first, &stop); // stops at the blank, newline or NUL after the token
-    return stop == t.second && std::isfinite(value); // CGAL's reader rejects an overflow
-  };
   auto fail = [&] {
     points.clear();
     polygons.clear();
@@ -310,8 +320,8 @@ bool read_plain_OFF(const std::string& filename, std::vector<Point>& points,
   p += 3;
   skip_spaces();
   std::size_t nv = 0, nf = 0, ne = 0;
-  if(!read_line() || tokens.size() != 3 || !integer(tokens[0], nv) || !integer(tokens[1], nf) ||
-     !integer(tokens[2], ne) || nv == 0 || nf == 0 || p == end)
+  if(!read_line() || tokens.size() != 3 || !plain_OFF_integer(tokens[0], nv) || !plain_OFF_integer(tokens[1], nf) ||
+     !plain_OFF_integer(tokens[2], ne) || nv == 0 || nf == 0 || p == end)
     return false;
   points.clear();
   polygons.clear();
@@ -321,8 +331,8 @@ bool read_plain_OFF(const std::string& filename, std::vector<Point>& points,
   {
     skip_spaces();
     std::array<double, 3> x;
-    if(p == end || !read_line() || tokens.size() != 3 || !number(tokens[0], x[0]) || !number(tokens[1], x[1]) ||
-       !number(tokens[2], x[2]))
+    if(p == end || !read_line() || tokens.size() != 3 || !plain_OFF_number(tokens[0], x[0]) ||
+       !plain_OFF_number(tokens[1], x[1]) || !plain_OFF_number(tokens[2], x[2]))
       return fail();
     points.emplace_back();
     CGAL::IO::internal::fill_point(x[0], x[1], x[2], 1.0, points.back());
@@ -331,11 +341,11 @@ bool read_plain_OFF(const std::string& filename, std::vector<Point>& points,
   {
     skip_spaces();
     std::size_t n = 0;
-    if(p == end || !read_line() || tokens.empty() || !integer(tokens[0], n) || n < 3 || tokens.size() != n + 1)
+    if(p == end || !read_line() || tokens.empty() || !plain_OFF_integer(tokens[0], n) || n < 3 || tokens.size() != n + 1)
       return fail();
     polygons.emplace_back(n);
     for(std::size_t k = 0; k < n; ++k)
-      if(!integer(tokens[k + 1], polygons.back()[k]) || polygons.back()[k] >= nv)
+      if(!plain_OFF_integer(tokens[k + 1], polygons.back()[k]) || polygons.back()[k] >= nv)
         return fail();
   }
   return true;
