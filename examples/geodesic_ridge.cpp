@@ -511,7 +511,8 @@ GEODESIC_RIDGE_JSON_FIELDS(Extended_surface_statistics, rings, number_of_faces, 
                            number_of_closures, winding_bound_hits, refused_faces, refused_gluings, open_fans,
                            number_of_leaf_vertices)
 GEODESIC_RIDGE_JSON_FIELDS(Ridge_curve_statistics, ridge_segments, junctions, free_ends, components, cycles,
-                           total_length, faces_with_several_copies, surviving_copies, split_copies, envelope_segments,
+                           total_length, faces_with_several_copies, surviving_copies, split_copies, recombined_copies,
+                           envelope_segments,
                            edge_segments, regions_before_merge, merged_segments, rejoined_segments, border_joining_segments,
                            dropped_components,
                            pruned_spur_segments, pruned_flat_end_segments)

@@ -10,6 +10,7 @@
 
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/solvers/Window_propagation_solver.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -251,6 +252,47 @@ TEST_CASE("kinks inside one sheet: the major ridge at a small tolerance", "[ridg
   // the second of bench_ridge_accuracy's random points (seed 1 + F)
   const auto points = GT::random_face_locations(bunny, 2, 1 + static_cast<unsigned>(bunny.number_of_faces()));
   check(bunny, points[1], "bunny_1k f" + std::to_string(std::size_t(points[1].first)));
+}
+
+// Issue 10, copies that recombine nearer sheets' fronts: at small tolerances K
+// keeps false branches that the fronts' exact paths cross far upstream, E grows
+// far behind them, and a far sheet, reached by both fronts and glued across the
+// ridge between them, is the only one exact at the ridge's faces: its linear
+// field hid the ridge (Recombined_copy_splitter). Recall p95 at tolerance 0.002
+// before the split (mean edges): teddy_3k v383 5.70, bunny_1k v80 2.37, v20
+// 1.79, v481 1.11 (bench_ridge_accuracy --sources-per-mesh 25 --seed 7; and
+// bunny_7k v1951 10.1). Exact solver, and our window propagation, which has no
+// cones (the kink split does not run).
+TEST_CASE("copies that recombine nearer sheets' fronts: the major ridge at a small tolerance", "[ridge_accuracy]")
+{
+  const GT::Reference_ridge_options ropt = reference_options();
+  auto check = [&](const Mesh& m, std::size_t v, const std::string& what) {
+    const Mesh::Vertex_index source(static_cast<Mesh::size_type>(v));
+    const auto ref = GT::reference_ridge(m, source, ropt);
+    REQUIRE(ref.failed_samples == 0);
+    REQUIRE(ref.points.size() > 0);
+    auto run = [&](const auto& rc, const std::string& solver) {
+      INFO(what << " v" << v << ", " << solver);
+      const auto acc = GT::ridge_accuracy(ref, rc.polylines, ropt);
+      std::cout << std::setprecision(3) << "recombined copies, " << what << " v" << v << " (" << solver
+                << "): split " << rc.statistics.ridge.recombined_copies << ", recall p95 " << acc.recall_p95
+                << ", precision p95 " << acc.precision_p95 << "\n";
+      REQUIRE(acc.recall_points > 0);
+      CHECK(rc.statistics.ridge.recombined_copies > 0);
+      CHECK(rc.statistics.ridge.components == 1);
+      CHECK(acc.recall_p95 <= 0.5);
+      CHECK(acc.precision_p95 <= 0.5);
+    };
+    namespace p = Geodesic_ridge::parameters;
+    run(Geodesic_ridge::compute_ridge_curve(m, source, p::tolerance(0.002)), "exact");
+    run(Geodesic_ridge::compute_ridge_curve(m, source,
+                                            p::tolerance(0.002, p::solver(Geodesic_ridge::Window_propagation_solver()))),
+        "vtp");
+  };
+  const Mesh teddy = load("teddy_3k.off");
+  check(teddy, 383, "teddy_3k");
+  const Mesh bunny = load("bunny_1k.off");
+  for(const std::size_t v : {20, 80, 481}) check(bunny, v, "bunny_1k");
 }
 
 // ---------------------------------------------------------------------------

@@ -100,6 +100,7 @@ struct Ridge_curve_statistics
   /// cell boundaries made ridge to join the pieces that hang from different border loops
   std::size_t border_joining_segments = 0;
   std::size_t dropped_components = 0;     ///< detached pieces dropped
+  std::size_t recombined_copies = 0;      ///< copies split into the fronts of nearer copies they recombine
   std::size_t pruned_spur_segments = 0;   ///< free-end segments with a gradient jump below the minimum angle
   std::size_t pruned_flat_end_segments = 0; ///< free-end segments with no positive curvature near their end
   /// \name The Ridge
@@ -138,6 +139,159 @@ struct Face_copies
   std::vector<std::size_t> copies;              // faces of E
   std::vector<std::array<double, 3> > fields;   // their corner distances
   std::vector<char> split;                      // empty, or per copy: one front of a copy split at a kink
+};
+
+// Keeps the entries j of fc for which keep(j) is true, in order.
+template <class Keep>
+void keep_face_copies_if(Face_copies& fc, const Keep& keep)
+{
+  std::size_t kept = 0;
+  for(std::size_t j = 0; j < fc.copies.size(); ++j)
+    if(keep(j))
+    {
+      fc.copies[kept] = fc.copies[j];
+      fc.fields[kept] = fc.fields[j];
+      if(!fc.split.empty()) fc.split[kept] = fc.split[j];
+      ++kept;
+    }
+  fc.copies.resize(kept);
+  fc.fields.resize(kept);
+  if(!fc.split.empty()) fc.split.resize(kept);
+}
+
+// A copy that recombines fronts that nearer sheets carry apart. Grown far
+// enough, a sheet of E wraps around and is reached by two fronts that K keeps
+// apart in the nearer rings, glued across the ridge between them. Where the
+// fronts' exact paths cross a false branch of K far upstream (small
+// tolerances: K keeps many), only that far sheet carries the exact distances
+// at the faces along the ridge; its linear field interpolates both fronts,
+// lies below each, dominates the nearer copies and hides the ridge (bunny_7k
+// v1951 at tolerance 0.002: a ring-43 copy, a branch of 12 mean edges lost).
+// The nearer copies tell its fronts apart, with any solver: each corner of a
+// copy of ring r > 0 belongs to the copy of the face in a ring below r whose
+// distance there is closest to the copy's, within `witness_tolerance`. A copy
+// whose corners all have owners, two or more of them, no one of which is
+// within the tolerance at all three corners, and two of whose linear fields'
+// gradients are `split_angle` or more apart, becomes one copy per owner: the
+// copy's distance at the corners that owner owns, the owner's (never below
+// the copy's) at the others. The envelope of the split copies keeps the
+// copy's corner distances and has its boundary where the owners meet.
+template <class TriangleMesh, class VertexPointMap, class FaceIndexMap, class Point>
+class Recombined_copy_splitter
+{
+  typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
+  typedef std::array<std::size_t, 3> Owners;
+  static constexpr std::size_t none = std::size_t(-1);
+
+public:
+  // `corners`: per copy of E, its corner distances
+  Recombined_copy_splitter(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim,
+                           const Extended_surface<Point>& E, const std::vector<std::array<double, 3> >& corners,
+                           double witness_tolerance, double split_angle)
+    : faces_(tm, vpm, fim), E_(E), corners_(corners), witness_tolerance_(witness_tolerance),
+      split_angle_(split_angle), first_(num_faces(tm) + 1, 0), copies_of_(corners.size())
+  {
+    // every copy of E, by face of M
+    for(std::size_t c = 0; c < corners.size(); ++c) ++first_[E.original_face[c] + 1];
+    for(std::size_t f = 0; f + 1 < first_.size(); ++f) first_[f + 1] += first_[f];
+    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+    for(std::size_t c = 0; c < corners.size(); ++c) copies_of_[next[E.original_face[c]]++] = c;
+  }
+
+  // splits the recombined copies among `face_copies` (in place); how many
+  std::size_t operator()(std::vector<Face_copies>& face_copies) const
+  {
+    std::size_t split_count = 0;
+    for(std::size_t f = 0; f < face_copies.size(); ++f)
+    {
+      Face_copies& fc = face_copies[f];
+      const std::size_t undominated = fc.copies.size();
+      std::vector<char> replaced(undominated, 0);
+      for(std::size_t j = 0; j < undominated; ++j)
+      {
+        const std::size_t c = fc.copies[j];
+        if(E_.ring[c] == 0 || (!fc.split.empty() && fc.split[j])) continue;
+        const std::array<double, 3> d = fc.fields[j];
+        Owners owner;
+        if(!nearer_owners(f, c, d, owner) || !fronts_apart(f, owner)) continue;
+        add_split_fields(c, d, owner, fc);
+        replaced[j] = 1;
+        ++split_count;
+      }
+      remove_replaced(replaced, fc);
+    }
+    return split_count;
+  }
+
+private:
+  // each corner's owner among the copies of face f nearer than copy c (with
+  // distances d); false unless every corner has one, they are not all one
+  // copy, and no one copy is within the tolerance at all three corners
+  bool nearer_owners(std::size_t f, std::size_t c, const std::array<double, 3>& d, Owners& owner) const
+  {
+    owner = {{none, none, none}};
+    std::array<double, 3> off{};
+    for(std::size_t i = first_[f]; i < first_[f + 1]; ++i)
+    {
+      const std::size_t w = copies_of_[i];
+      if(E_.ring[w] >= E_.ring[c]) continue;
+      int within = 0;
+      for(int k = 0; k < 3; ++k)
+      {
+        const double e = std::abs(corners_[w][k] - d[k]);
+        if(e <= witness_tolerance_) ++within;
+        if(owner[k] == none ? e <= witness_tolerance_ : e < off[k]) { owner[k] = w; off[k] = e; }
+      }
+      if(within == 3) return false; // one front in a nearer sheet
+    }
+    return owner[0] != none && owner[1] != none && owner[2] != none &&
+           !(owner[0] == owner[1] && owner[1] == owner[2]);
+  }
+
+  // two owners' linear fields' gradients are `split_angle` or more apart
+  bool fronts_apart(std::size_t f, const Owners& owner) const
+  {
+    const auto p = faces_.corner_points(f);
+    for(int k = 0; k < 3; ++k)
+    {
+      if(owner[k] == owner[(k + 1) % 3]) continue;
+      const std::array<double, 3> a = field_gradient(p, corners_[owner[k]]);
+      const std::array<double, 3> b = field_gradient(p, corners_[owner[(k + 1) % 3]]);
+      const Vector u(a[0], a[1], a[2]), v(b[0], b[1], b[2]);
+      if(u != CGAL::NULL_VECTOR && v != CGAL::NULL_VECTOR &&
+         CGAL::to_double(CGAL::approximate_angle(u, v)) >= split_angle_)
+        return true;
+    }
+    return false;
+  }
+
+  // one field per owner: d at its corners, its own (never below d) at the others
+  void add_split_fields(std::size_t c, const std::array<double, 3>& d, const Owners& owner, Face_copies& fc) const
+  {
+    if(fc.split.empty()) fc.split.assign(fc.copies.size(), 0);
+    for(int k = 0; k < 3; ++k)
+    {
+      if((k > 0 && owner[k] == owner[0]) || (k > 1 && owner[k] == owner[1])) continue; // each owner once
+      std::array<double, 3> field;
+      for(int i = 0; i < 3; ++i) field[i] = owner[i] == owner[k] ? d[i] : std::max(d[i], corners_[owner[k]][i]);
+      fc.copies.push_back(c);
+      fc.fields.push_back(field);
+      fc.split.push_back(1);
+    }
+  }
+
+  // drops the entries replaced by their split fields (the first replaced.size() of fc)
+  static void remove_replaced(const std::vector<char>& replaced, Face_copies& fc)
+  {
+    if(std::find(replaced.begin(), replaced.end(), 1) == replaced.end()) return;
+    keep_face_copies_if(fc, [&](std::size_t j) { return j >= replaced.size() || !replaced[j]; });
+  }
+
+  Faces_by_index<TriangleMesh, VertexPointMap> faces_;
+  const Extended_surface<Point>& E_;
+  const std::vector<std::array<double, 3> >& corners_;
+  double witness_tolerance_, split_angle_;
+  std::vector<std::size_t> first_, copies_of_; // the copies of face f: copies_of_[first_[f] .. first_[f + 1])
 };
 
 // A kink between the corners of one copy. Where the cut graph K lacks a
@@ -202,6 +356,7 @@ public:
     for(std::size_t f = 0; f < face_copies.size(); ++f)
       for(std::size_t j = 0; j < face_copies[f].copies.size(); ++j)
       {
+        if(already_split(face_copies[f], j)) continue;
         Split x;
         const std::size_t c = face_copies[f].copies[j];
         const bool alone = face_copies[f].copies.size() == 1;
@@ -222,7 +377,7 @@ public:
         const std::size_t n = E_.original_face[g];
         const auto& fc = face_copies[n];
         const auto it = std::find(fc.copies.begin(), fc.copies.end(), g);
-        if(it == fc.copies.end()) continue; // dominated
+        if(it == fc.copies.end() || already_split(fc, std::size_t(it - fc.copies.begin()))) continue; // dominated
         const std::array<double, 3>& d = fc.fields[std::size_t(it - fc.copies.begin())];
         const Split& from = split.at(c);
         Split x;
@@ -239,11 +394,11 @@ public:
       {
         const std::size_t c = face_copies[f].copies[j];
         const auto it = split.find(c);
-        if(it == split.end())
+        if(it == split.end() || already_split(face_copies[f], j))
         {
           out[f].copies.push_back(c);
           out[f].fields.push_back(face_copies[f].fields[j]);
-          out[f].split.push_back(0);
+          out[f].split.push_back(already_split(face_copies[f], j));
           continue;
         }
         for(const auto& field : split_fields(f, face_copies[f].fields[j], it->second))
@@ -257,6 +412,9 @@ public:
   }
 
 private:
+  // entry j of fc: one front of a copy split before (`Recombined_copy_splitter`)
+  static bool already_split(const Face_copies& fc, std::size_t j) { return !fc.split.empty() && fc.split[j]; }
+
   // the index of front x in `fronts`, where it is added unless it is there
   std::size_t add_front(const Front& x, std::vector<Front>& fronts) const
   {
