@@ -514,7 +514,7 @@ GEODESIC_RIDGE_JSON_FIELDS(Ridge_curve_statistics, ridge_segments, junctions, fr
                            total_length, faces_with_several_copies, surviving_copies, split_copies, recombined_copies,
                            envelope_segments,
                            edge_segments, regions_before_merge, merged_segments, rejoined_segments, border_joining_segments,
-                           dropped_components,
+                           dropped_components, piece_joining_segments,
                            pruned_spur_segments, pruned_flat_end_segments)
 GEODESIC_RIDGE_JSON_FIELDS(Cone_ridge_statistics, tolerance, points_moved, junctions_moved, points_kept, points_added,
                            largest_move)
