@@ -9,6 +9,7 @@
 //                  [--refined OUT.ply [--ply-ascii]]
 //                  [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]
 //                  [--query IN.txt [--query-barycentric] --query-out OUT.txt] [--field linear|cone]
+//                  [--corner-fallback]
 //                  [--stats OUT.json] [--png OUT.png]
 //   geodesic_ridge MESH --sources FILE --out-dir DIR [--repair] [--tolerance T] [--solver NAME]
 //
@@ -92,7 +93,7 @@ const char* synopsis =
     "                      [--refined OUT.ply [--ply-ascii]]\n"
     "                      [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]\n"
     "                      [--query IN.txt [--query-barycentric] --query-out OUT.txt]\n"
-    "                      [--field linear|cone] [--stats OUT.json] [--png OUT.png]\n"
+    "                      [--field linear|cone] [--corner-fallback] [--stats OUT.json] [--png OUT.png]\n"
     "       geodesic_ridge MESH --sources FILE --out-dir DIR [--repair] [--tolerance T] [--solver NAME]\n"
     "  MESH: a manifold surface, closed or with borders (.off, .obj, .ply; PLY triangle strips too).\n"
     "  Polygons are triangulated (CGAL's triangulate_face rule; a note on stderr says how many, and how\n"
@@ -159,6 +160,7 @@ struct Options
   std::string query, query_out;
   bool query_barycentric = false;
   Geodesic_ridge::Field field = Geodesic_ridge::Field::linear;
+  bool corner_fallback = false;
   std::string sources, out_dir;           // many sources: --sources FILE --out-dir DIR
 };
 
@@ -220,6 +222,10 @@ po::options_description describe()
                             "field) or cone (exact solver only: per face copy, the exact solver's cones; --ridge, "
                             "--ridge-locations and the picture's ridge are where the cones meet; the refined mesh, "
                             "the iso-lines and the picture's colours stay linear)")
+    ("corner-fallback", po::bool_switch(),
+     "exact solver: a face copy whose corner no cone sample reaches exactly takes that corner's front from a "
+     "sample next to it (parameters::corner_fallback: more branches found at small tolerances, some placed "
+     "less well)")
     ("sources", text("FILE"), "many sources instead of one, one per line: 'V' (a vertex) or 'FACE X Y Z' (a point of "
                               "the face); '#' starts a comment. With --out-dir; in parallel when built with TBB")
     ("out-dir", text("DIR"), "with --sources: for the k-th source (0-based) DIR/ridge_k.polylines.txt and "
@@ -336,6 +342,7 @@ Options parse(int argc, char** argv)
   o.repair = vm["repair"].as<bool>();
   o.isolines_from_vertices = vm["isolines-from-vertices"].as<bool>();
   o.query_barycentric = vm["query-barycentric"].as<bool>();
+  o.corner_fallback = vm["corner-fallback"].as<bool>();
   o.sources = text(vm, "sources"), o.out_dir = text(vm, "out-dir");
   if(o.sources.empty() != o.out_dir.empty()) throw Usage_error("--sources and --out-dir go together");
   if(!o.sources.empty())
@@ -354,6 +361,8 @@ Options parse(int argc, char** argv)
   if(o.ply_ascii && o.refined.empty()) throw Usage_error("--ply-ascii needs --refined");
   if(o.field == Geodesic_ridge::Field::cone && o.solver != "exact")
     throw Geodesic_ridge::Invalid_parameter_error("the cone field needs the exact solver");
+  if(o.corner_fallback && o.solver != "exact")
+    throw Geodesic_ridge::Invalid_parameter_error("--corner-fallback needs the exact solver (its cones)");
   if(vm.count("tolerance")) o.tolerance = parse_number("tolerance", text(vm, "tolerance"));
   return o;
 }
@@ -562,7 +571,7 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
                                       : Json{{"face", file_source.face}, {"barycentric", file_source.coordinates}};
   Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source}, {"tolerance", o.tolerance}, {"solver", o.solver},
                             {"field", o.field == Geodesic_ridge::Field::cone ? "cone" : "linear"},
-                            {"repair", o.repair}}},
+                            {"corner_fallback", o.corner_fallback}, {"repair", o.repair}}},
             {"input", {{"file_vertices", map.number_of_file_vertices()},
                        {"file_faces", map.number_of_file_faces()},
                        {"connected_components", cc ? cc->number_of_components() : 1},
@@ -677,7 +686,7 @@ auto with_parameters(const Options& o, const F& f)
   if(o.solver == "heat") return with(Geodesic_ridge::Heat_method_solver<>());
   if(o.solver == "heat-idt") return with(Geodesic_ridge::Heat_method_idt_solver());
   if(o.solver == "dijkstra") return with(Geodesic_ridge::Dijkstra_solver());
-  return f(p::tolerance(o.tolerance, p::field(o.field)));
+  return f(p::tolerance(o.tolerance, p::field(o.field, p::corner_fallback(o.corner_fallback))));
 }
 
 // The ridge of the source.
@@ -997,7 +1006,7 @@ Batch_source read_source_line(const std::vector<std::string>& t, const Mesh& mes
 void write_batch_stats(const std::string& filename, const Options& o, const Batch_source& source, const Ridge& rc)
 {
   Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source.text}, {"tolerance", o.tolerance},
-                            {"solver", o.solver}, {"repair", o.repair}}},
+                            {"solver", o.solver}, {"corner_fallback", o.corner_fallback}, {"repair", o.repair}}},
             {"ridge", {{"polylines", rc.polylines.size()}}},
             {"statistics", rc.statistics}};
   j["timings_seconds"] = timings_of(rc, 0);
