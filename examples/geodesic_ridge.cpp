@@ -12,6 +12,7 @@
 //                  [--corner-fallback]
 //                  [--stats OUT.json] [--png OUT.png]
 //   geodesic_ridge MESH --sources FILE --out-dir DIR [--repair] [--tolerance T] [--solver NAME]
+//                  [--corner-fallback]
 //
 // Exit status: 0 success, 1 bad input (mesh, source, parameter), 2 bad command
 // line, 3 internal error. Every error is one line on stderr; so is every note
@@ -95,6 +96,7 @@ const char* synopsis =
     "                      [--query IN.txt [--query-barycentric] --query-out OUT.txt]\n"
     "                      [--field linear|cone] [--corner-fallback] [--stats OUT.json] [--png OUT.png]\n"
     "       geodesic_ridge MESH --sources FILE --out-dir DIR [--repair] [--tolerance T] [--solver NAME]\n"
+    "                      [--corner-fallback]\n"
     "  MESH: a manifold surface, closed or with borders (.off, .obj, .ply; PLY triangle strips too).\n"
     "  Polygons are triangulated (CGAL's triangulate_face rule; a note on stderr says how many, and how\n"
     "  many were not planar); dirty meshes are refused, naming what --repair would fix.\n"
@@ -363,6 +365,9 @@ Options parse(int argc, char** argv)
     throw Geodesic_ridge::Invalid_parameter_error("the cone field needs the exact solver");
   if(o.corner_fallback && o.solver != "exact")
     throw Geodesic_ridge::Invalid_parameter_error("--corner-fallback needs the exact solver (its cones)");
+  if(o.corner_fallback && o.field == Geodesic_ridge::Field::cone)
+    throw Geodesic_ridge::Invalid_parameter_error("--corner-fallback is for the linear field (the cone field reads "
+                                                  "every copy's cones)");
   if(vm.count("tolerance")) o.tolerance = parse_number("tolerance", text(vm, "tolerance"));
   return o;
 }

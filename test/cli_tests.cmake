@@ -104,6 +104,7 @@ add_test(NAME cli.ridge.corner_fallback.bunny_1k
                  "-DEXTRA=--corner-fallback" -DOUT=${OUTDIR}/corner_fallback -DGENUS=0
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
 cli_failure(corner_fallback_fmm   "--corner-fallback needs the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --corner-fallback)
+cli_failure(corner_fallback_cone  "--corner-fallback is for the linear field" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field cone --corner-fallback)
 cli_failure(unknown_field         "unknown field 'planar'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field planar)
 set(Q ${D}/torus_1k.off --source-vertex 0 --query-out ${OUTDIR}/q.txt --query)
 cli_failure(query_bad_face        "line 1: face 5000 is out of range" ${CLI} ${Q} ${B}/queries_bad_face.txt)

@@ -166,8 +166,9 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle)
 /// More branches of the major ridge are found (on the accuracy benchmark's 168
 /// pairs, recall p95 at tolerance 0.002 within 0.5 mean edge on all of them
 /// instead of 167), but they are placed less precisely (precision p95 within
-/// 0.25 mean edge on 154 pairs instead of 162) and the cones are read at twice
+/// 0.25 mean edge on 149 pairs instead of 161) and the cones are read at twice
 /// as many samples: off by default (user manual, \ref GeodesicRidgeSecAccuracyRidge).
+/// Not with the cone field, which reads every copy's cones.
 GEODESIC_RIDGE_NAMED_PARAMETER(bool, corner_fallback)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// `Field::linear` (default) or `Field::cone`: with `cone`, the ridge curve

@@ -31,6 +31,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <queue>
 #include <set>
 #include <tuple>
@@ -281,7 +282,7 @@ private:
     return false;
   }
 
-  // one field per owner: d at its corners, its own (never below d) at the others
+  // one field per owner (`split_field`)
   void add_split_fields(std::size_t c, const std::array<double, 3>& d, const Owners& owner, Face_copies& fc) const
   {
     if(fc.split.empty()) fc.split.assign(fc.copies.size(), 0);
@@ -1045,12 +1046,8 @@ private:
       for(std::size_t loop = 0; loop < number_of_loops_; ++loop) roots.insert(uf.find(loop_node(loop)));
       if(roots.size() < 2) return;
     }
-    const std::vector<Segment> links = cell_boundary_links();
-    // node ids as in unite_pieces: nodes_, then the loops (nodes_ is complete now)
-    const std::size_t n = nodes_.size() + number_of_loops_;
-    std::vector<std::vector<std::size_t> > at(n);
-    for(std::size_t i = 0; i < links.size(); ++i) { at[links[i].a].push_back(i); at[links[i].b].push_back(i); }
-    auto weight = [&](const Segment& sg) { return length(sg) / std::max(sg.angle, 1.0); };
+    const Link_graph& g = link_graph(); // (node ids as in unite_pieces: nodes_ is complete now)
+    const std::size_t n = g.at.size();
     for(;;)
     {
       Union_find uf(n);
@@ -1060,39 +1057,21 @@ private:
       for(std::size_t loop = 1; loop < number_of_loops_; ++loop)
         if(uf.find(loop_node(loop)) != main) other_loops.insert(uf.find(loop_node(loop)));
       if(other_loops.empty()) return;
-      // Dijkstra from the main piece to the nearest node of a piece with a loop
-      std::vector<double> dist(n, std::numeric_limits<double>::infinity());
-      std::vector<std::size_t> via(n, none);
-      typedef std::pair<double, std::size_t> Item;
-      std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
-      for(std::size_t v = 0; v < n; ++v) if(uf.find(v) == main) { dist[v] = 0; queue.emplace(0.0, v); }
-      std::size_t reached = none;
-      while(!queue.empty())
-      {
-        const auto [d, v] = queue.top();
-        queue.pop();
-        if(d > dist[v]) continue;
-        if(other_loops.count(uf.find(v))) { reached = v; break; }
-        for(std::size_t i : at[v])
-        {
-          const std::size_t w = links[i].a == v ? links[i].b : links[i].a;
-          if(d + weight(links[i]) < dist[w]) { dist[w] = d + weight(links[i]); via[w] = i; queue.emplace(dist[w], w); }
-        }
-      }
-      if(reached == none) return; // (the check of the topology reports it)
-      for(std::size_t v = reached; uf.find(v) != main;)
-      {
-        Segment sg = links[via[v]];
-        sg.ridge = true;
-        segments_.push_back(sg);
-        ++st_.border_joining_segments;
-        v = sg.a == v ? sg.b : sg.a;
-      }
+      // from the main piece to the nearest node of a piece with a loop
+      std::vector<std::size_t> sources;
+      for(std::size_t v = 0; v < n; ++v) if(uf.find(v) == main) sources.push_back(v);
+      double path_length = 0;
+      const std::vector<std::size_t> path = shortest_link_path(
+          g, sources, [&](std::size_t v) { return other_loops.count(uf.find(v)) > 0; },
+          [](std::size_t) { return false; }, std::numeric_limits<double>::infinity(), path_length);
+      if(path.empty()) return; // (the check of the topology reports it)
+      add_ridge_links(path);
+      st_.border_joining_segments += path.size();
     }
   }
 
-  // A piece of the ridge detached from the main one (the longest, or the one
-  // on the border) is dropped, unless it holds a verified kink: a segment
+  // A piece of the ridge detached from the main one (the longest, or the
+  // loops' piece) is dropped, unless it holds a verified kink: a segment
   // between two fronts of one split copy (split at a kink by the solver's
   // cones, `Kink_splitter`, or into the nearer copies' fronts it recombines,
   // `Recombined_copy_splitter`). Such a piece is a real branch whose link to
@@ -1109,14 +1088,14 @@ private:
   // of path along mesh edges each, precision p95 0.07 -> 0.20 when joined).
   void join_verified_pieces()
   {
-    std::vector<Segment> links;
-    std::vector<std::vector<std::size_t> > at; // per node, its links
-    std::vector<std::size_t> given_up;         // a node of each piece no path joined
+    // a node of each piece not joined (too far in space, no path, a path too
+    // long); tried again after a join, which brings the main piece nearer
+    std::vector<std::size_t> skipped;
     for(;;)
     {
       const Pieces pieces = ridge_pieces();
       std::set<std::size_t> skip;
-      for(std::size_t v : given_up) skip.insert(pieces.uf.find(v));
+      for(std::size_t v : skipped) skip.insert(pieces.uf.find(v));
       std::size_t from = none;
       for(const auto& [r, p] : pieces.piece)
         if(r != pieces.main && p.verified && !p.border && p.segments + 1 == p.nodes && !skip.count(r) &&
@@ -1127,27 +1106,102 @@ private:
       std::vector<std::size_t> from_nodes;
       for(std::size_t v = 0; v < pieces.in_piece.size(); ++v)
         if(pieces.in_piece[v] && pieces.uf.find(v) == from) from_nodes.push_back(v);
-      given_up.push_back(from_nodes.front()); // (taken back if joined: the piece is then part of the main one)
-      if(number_of_loops_ == 0 && gap_in_space(pieces, from_nodes) > piece_length) continue;
-      if(links.empty())
+      // (a path is no shorter than the gap in space; with a border, nodes on it
+      // come with the links, so the gap is not known before)
+      if(number_of_loops_ == 0 && !links_ && gap_in_space(pieces, from_nodes) > piece_length)
       {
-        // (this completes nodes_: the loops' node ids move, so count again)
-        links = cell_boundary_links();
-        at.assign(nodes_.size() + number_of_loops_, {});
-        for(std::size_t i = 0; i < links.size(); ++i) { at[links[i].a].push_back(i); at[links[i].b].push_back(i); }
-        given_up.pop_back();
+        skipped.push_back(from_nodes.front());
         continue;
       }
-      double path_length = 0;
-      const std::vector<std::size_t> path = link_path(pieces, from_nodes, from, links, at, path_length);
-      if(path.empty() || path_length > piece_length) continue;
-      given_up.pop_back();
-      for(std::size_t i : path)
+      if(!links_)
       {
-        segments_.push_back(links[i]);
-        segments_.back().ridge = true;
+        link_graph(); // (this completes nodes_: the loops' node ids move, so count again)
+        continue;
       }
+      auto piece_of = [&](std::size_t v) { return pieces.in_piece[v] ? pieces.uf.find(v) : none; };
+      double path_length = 0;
+      const std::vector<std::size_t> path = shortest_link_path(
+          *links_, from_nodes, [&](std::size_t v) { return piece_of(v) == pieces.main; },
+          [&](std::size_t v) { return piece_of(v) != none && piece_of(v) != from; }, piece_length, path_length);
+      if(path.empty() || path_length > piece_length)
+      {
+        skipped.push_back(from_nodes.front());
+        continue;
+      }
+      add_ridge_links(path);
       st_.piece_joining_segments += path.size();
+      skipped.clear();
+    }
+  }
+
+  // The boundaries between cells (`cell_boundary_links()`) as a graph: per
+  // node, the links at it. Built once (it completes nodes_).
+  struct Link_graph { std::vector<Segment> links; std::vector<std::vector<std::size_t> > at; };
+  const Link_graph& link_graph()
+  {
+    if(!links_)
+    {
+      Link_graph g;
+      g.links = cell_boundary_links();
+      g.at.assign(nodes_.size() + number_of_loops_, {});
+      for(std::size_t i = 0; i < g.links.size(); ++i) { g.at[g.links[i].a].push_back(i); g.at[g.links[i].b].push_back(i); }
+      links_ = std::move(g);
+    }
+    return *links_;
+  }
+
+  // The links from a node of `sources` to the first node with is_goal() that
+  // are shortest in length over the gradient jump (the fronts meet where the
+  // jump is large), through no node with blocked(), as long as that sum stays
+  // within max_weight (it is at most the path's length); and their length.
+  // Empty if there is none.
+  template <class IsGoal, class IsBlocked>
+  std::vector<std::size_t> shortest_link_path(const Link_graph& g, const std::vector<std::size_t>& sources,
+                                              const IsGoal& is_goal, const IsBlocked& blocked, double max_weight,
+                                              double& path_length) const
+  {
+    const std::size_t n = g.at.size();
+    std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+    std::vector<std::size_t> via(n, none);
+    typedef std::pair<double, std::size_t> Item;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
+    for(std::size_t v : sources) { dist[v] = 0; queue.emplace(0.0, v); }
+    std::size_t reached = none;
+    while(!queue.empty() && reached == none)
+    {
+      const auto [d, v] = queue.top();
+      queue.pop();
+      if(d > dist[v]) continue;
+      if(d > max_weight) break;
+      if(is_goal(v)) { reached = v; continue; }
+      if(via[v] != none && blocked(v)) continue; // (a source is never blocked)
+      for(std::size_t i : g.at[v])
+      {
+        const Segment& link = g.links[i];
+        const std::size_t w = link.a == v ? link.b : link.a;
+        const double dw = d + length(link) / std::max(link.angle, 1.0);
+        if(dw < dist[w]) { dist[w] = dw; via[w] = i; queue.emplace(dw, w); }
+      }
+    }
+    std::vector<std::size_t> path;
+    path_length = 0;
+    for(std::size_t v = reached; v != none && via[v] != none;)
+    {
+      const Segment& link = g.links[via[v]];
+      path.push_back(via[v]);
+      path_length += length(link);
+      v = link.a == v ? link.b : link.a;
+    }
+    return path;
+  }
+
+  // The links of `path` (indices into the link graph) made ridge segments.
+  void add_ridge_links(const std::vector<std::size_t>& path)
+  {
+    for(std::size_t i : path)
+    {
+      segments_.push_back(links_->links[i]);
+      segments_.back().ridge = true;
     }
   }
 
@@ -1203,46 +1257,6 @@ private:
         for(std::size_t a : from_nodes)
           gap = std::min(gap, CGAL::to_double(CGAL::squared_distance(nodes_[a].point, nodes_[b].point)));
     return std::sqrt(gap);
-  }
-
-  // The links (indices) from piece `from` (its nodes `from_nodes`) to the main
-  // piece that are shortest in length over the gradient jump, through nodes
-  // of no piece (Dijkstra), and their length; empty if none.
-  std::vector<std::size_t> link_path(const Pieces& pieces, const std::vector<std::size_t>& from_nodes,
-                                     std::size_t from, const std::vector<Segment>& links,
-                                     const std::vector<std::vector<std::size_t> >& at, double& path_length) const
-  {
-    const std::size_t n = at.size();
-    std::vector<double> dist(n, std::numeric_limits<double>::infinity());
-    std::vector<std::size_t> via(n, none);
-    typedef std::pair<double, std::size_t> Item;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
-    for(std::size_t v : from_nodes) { dist[v] = 0; queue.emplace(0.0, v); }
-    auto piece_of = [&](std::size_t v) { return pieces.in_piece[v] ? pieces.uf.find(v) : none; };
-    std::size_t reached = none;
-    while(!queue.empty() && reached == none)
-    {
-      const auto [d, v] = queue.top();
-      queue.pop();
-      if(d > dist[v]) continue;
-      if(piece_of(v) == pieces.main) reached = v;
-      if(piece_of(v) != none && piece_of(v) != from) continue; // the goal, or another piece: not through it
-      for(std::size_t i : at[v])
-      {
-        const std::size_t w = links[i].a == v ? links[i].b : links[i].a;
-        const double dw = d + length(links[i]) / std::max(links[i].angle, 1.0);
-        if(dw < dist[w]) { dist[w] = dw; via[w] = i; queue.emplace(dw, w); }
-      }
-    }
-    std::vector<std::size_t> path;
-    path_length = 0;
-    for(std::size_t v = reached; v != none && piece_of(v) != from;)
-    {
-      path.push_back(via[v]);
-      path_length += length(links[via[v]]);
-      v = links[via[v]].a == v ? links[via[v]].b : links[via[v]].a;
-    }
-    return path;
   }
 
   // Every boundary between two cells as a segment: the envelope's edges inside
@@ -1478,6 +1492,7 @@ private:
   std::map<Key, std::size_t> node_of_;
   std::vector<Ridge_point<Point> > nodes_;
   std::vector<Segment> segments_;
+  std::optional<Link_graph> links_; // the boundaries between cells, once needed
   Union_find fronts_; // cells that are one front
   // the border: per vertex of M its loop (or none), per node its loop (or none)
   std::vector<std::size_t> loop_of_vertex_, node_loop_;
