@@ -168,7 +168,8 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle)
 /// instead of 167), but they are placed less precisely (precision p95 within
 /// 0.25 mean edge on 149 pairs instead of 161) and the cones are read at twice
 /// as many samples: off by default (user manual, \ref GeodesicRidgeSecAccuracyRidge).
-/// Not with the cone field, which reads every copy's cones.
+/// Not with the cone field, which reads every copy's cones (with samples at
+/// barycentric 0.95 near the corners).
 GEODESIC_RIDGE_NAMED_PARAMETER(bool, corner_fallback)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// `Field::linear` (default) or `Field::cone`: with `cone`, the ridge curve
@@ -824,11 +825,13 @@ private:
     // tenth of a mean edge of the copy's distance (0.05 missed teddy_3k v383
     // and bunny_1k v80 at tolerance 0.002, 0.25 placed teddy_3k v383's ridge
     // worse), owners 30 degrees apart (the fronts meet where the precision is
-    // measured). Not with the cone field, whose cones are read per copy.
+    // measured). With the cone field too: the cone ridge is traced from the
+    // linear one and keeps its branches (bunny_7k v1951 and f6223, bunny_1k
+    // v80 at tolerance 0.002: recall p95 2.52, 2.34 and 0.61 mean edges
+    // without the split, 0.23, 0.21 and 0.10 with it).
     const double witness_tolerance = 0.1 * mean_edge_, recombined_split_angle = 30;
-    if(options_.field != Field::cone)
-      st_.ridge.recombined_copies = Recombined_copy_splitter<TriangleMesh, VertexPointMap, FaceIndexMap, Point>(
-          tm_, maps_.vpm, maps_.fim, E_, copy_corners_, witness_tolerance, recombined_split_angle)(face_copies_);
+    st_.ridge.recombined_copies = Recombined_copy_splitter<TriangleMesh, VertexPointMap, FaceIndexMap, Point>(
+        tm_, maps_.vpm, maps_.fim, E_, copy_corners_, witness_tolerance, recombined_split_angle)(face_copies_);
     std::vector<std::array<double, 3> >().swap(copy_corners_);
     if(split_at_kinks())
       split_fronts = Kink_splitter<TriangleMesh, VertexPointMap, FaceIndexMap, Point>(
