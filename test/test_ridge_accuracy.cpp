@@ -257,6 +257,7 @@ TEST_CASE("kinks inside one sheet: the major ridge at a small tolerance", "[ridg
 {
   namespace p = Geodesic_ridge::parameters;
   auto check = [&](const Mesh& m, const auto& source, const std::string& what, bool fallback = false) {
+    INFO(what);
     const auto rc = Geodesic_ridge::compute_ridge_curve(m, source, p::tolerance(0.002, p::corner_fallback(fallback)));
     check_major_ridge(exact_reference(m, source), rc, rc.polylines, "kinks inside one sheet, " + what);
     CHECK(rc.statistics.ridge.split_copies > 0);
@@ -286,8 +287,10 @@ TEST_CASE("copies that recombine nearer sheets' fronts: the major ridge at a sma
   namespace p = Geodesic_ridge::parameters;
   auto check = [&](const Mesh& m, std::size_t v, const std::string& what) {
     const Mesh::Vertex_index source(static_cast<Mesh::size_type>(v));
+    INFO(what << " v" << v);
     const auto ref = exact_reference(m, source);
     auto run = [&](const auto& rc, const std::string& solver) {
+      INFO(solver);
       check_major_ridge(ref, rc, rc.polylines,
                         "recombined copies, " + what + " v" + std::to_string(v) + " (" + solver + ")");
       CHECK(rc.statistics.ridge.recombined_copies > 0);
@@ -317,6 +320,7 @@ TEST_CASE("detached pieces with a verified kink: the major ridge at a small tole
 {
   auto check = [&](const Mesh& m, std::size_t v, const std::string& what) {
     const Mesh::Vertex_index source(static_cast<Mesh::size_type>(v));
+    INFO(what << " v" << v);
     const auto rc = Geodesic_ridge::compute_ridge_curve(m, source, Geodesic_ridge::parameters::tolerance(0.002));
     check_major_ridge(exact_reference(m, source), rc, rc.polylines,
                       "joined pieces, " + what + " v" + std::to_string(v));
@@ -342,10 +346,12 @@ TEST_CASE("the cone field's ridge: the major ridge at a small tolerance", "[ridg
   for(const std::size_t v : {341, 80})
   {
     const Mesh::Vertex_index source(static_cast<Mesh::size_type>(v));
+    INFO("bunny_1k v" << v);
     const auto rc = Geodesic_ridge::compute_ridge_curve(bunny, source,
                                                         p::tolerance(0.002, p::field(Geodesic_ridge::Field::cone)));
     check_major_ridge(exact_reference(bunny, source), rc, rc.cone_polylines,
                       "cone ridge, bunny_1k v" + std::to_string(v));
+    CHECK_FALSE(rc.cone_polylines.empty()); // (its topology is the linear ridge's, checked above)
     if(v == 80) CHECK(rc.statistics.ridge.recombined_copies > 0);
   }
 }
