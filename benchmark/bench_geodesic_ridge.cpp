@@ -66,7 +66,7 @@ int main(int argc, char** argv)
     // Small meshes take milliseconds, and a shared machine is noisy: one SMSP
     // solve and one pipeline run alternate (so both see the same machine),
     // for at least 1 s or 40 rounds, and the fastest of each is reported.
-    typedef decltype(Geodesic_ridge::compute_ridge_curve(mesh, source, options.parameters(tolerance))) Result;
+    typedef decltype(Geodesic_ridge::compute_ridge_curve(mesh, source, options.exact_parameters(tolerance))) Result;
     Result rc;
     double t_smsp = 1e300, spent = 0;
     try
@@ -78,7 +78,7 @@ int main(int argc, char** argv)
         Geodesic_ridge::Exact_solver()(mesh, source, CGAL::make_property_map(d));
         const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         t_smsp = std::min(t_smsp, t);
-        Result r = Geodesic_ridge::compute_ridge_curve(mesh, source, options.parameters(tolerance));
+        Result r = Geodesic_ridge::compute_ridge_curve(mesh, source, options.exact_parameters(tolerance));
         if(k == 0 || r.timings.total() < rc.timings.total()) rc = std::move(r);
         spent += t + rc.timings.total();
       }

@@ -25,8 +25,10 @@
 // method runs from the vertex sources only ('approximate' runs fmm and the
 // three).
 //
-// Solver 'cone': the exact solver with the cone field, measuring the cone
-// ridge (`Ridge_curve::cone_polylines`); 'exact+cone' runs both.
+// The ridge measured is the one reported (`Ridge_curve::ridge_polylines()`):
+// with the exact solver the cone ridge, or with --cone-ridge 0 the linear
+// field's. Solver 'cone': the exact solver with the cone field (every copy's
+// cones read, not only near kinks); 'exact+cone' runs both.
 //
 // Without MESH arguments it runs every .off file of ../shared/data (or of the
 // repository's data/ when ../shared is absent) with at most N faces (default
@@ -314,14 +316,11 @@ int main(int argc, char** argv)
               return compute(p::solver(Geodesic_ridge::Heat_method_idt_solver(), options.parameters(t)));
             if(solver == "dijkstra") return compute(p::solver(Geodesic_ridge::Dijkstra_solver(), options.parameters(t)));
             if(solver == "cone")
-              return compute(p::field(Geodesic_ridge::Field::cone,
-                                      p::solver(Geodesic_ridge::Exact_solver(), options.parameters(t))));
-            return compute(p::solver(Geodesic_ridge::Exact_solver(), options.parameters(t)));
+              return compute(p::field(Geodesic_ridge::Field::cone, options.exact_parameters(t)));
+            return compute(options.exact_parameters(t));
           };
-          // the ridge measured: with 'cone', the cone field's
-          auto measured = [&](const auto& rc) -> const auto& {
-            return solver == "cone" ? rc.cone_polylines : rc.polylines;
-          };
+          // the ridge measured: the one reported (the cone ridge with the exact solver)
+          auto measured = [&](const auto& rc) -> const auto& { return rc.ridge_polylines(); };
           const auto t0 = std::chrono::steady_clock::now();
           const auto rc = run(tolerance);
           t_ridge = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -34,12 +34,13 @@ inline std::vector<std::string> benchmark_meshes(std::vector<std::string> files)
 ///   --initial-rings K --extension-step K --maximum-rings K --maximum-solves K
 ///   --spur-angle DEG --tree-from-solver 0|1 --predicted 0|1
 ///   --leaf-curvature DEG --branch-curvature DEG --kink-angle DEG --corner-fallback 0|1
+///   --cone-ridge 0|1 (with the exact solver: `exact_parameters()`)
 struct Pipeline_options
 {
   int initial_rings = Geodesic_ridge::default_initial_rings, extension_step = Geodesic_ridge::default_extension_step,
       maximum_rings = Geodesic_ridge::default_maximum_rings,
       maximum_solves = Geodesic_ridge::default_maximum_solves;
-  bool tree_from_solver = false, predicted = true, corner_fallback = false;
+  bool tree_from_solver = false, predicted = true, corner_fallback = false, cone_ridge = true;
   double spur_angle = Geodesic_ridge::default_minimum_spur_angle,
          leaf_curvature = Geodesic_ridge::default_leaf_curvature, kink_angle = Geodesic_ridge::default_kink_angle,
          branch_curvature = Geodesic_ridge::default_branch_curvature;
@@ -59,6 +60,7 @@ struct Pipeline_options
     else if(a == "--spur-angle") spur_angle = std::stod(argv[++i]);
     else if(a == "--kink-angle") kink_angle = std::stod(argv[++i]);
     else if(a == "--corner-fallback") corner_fallback = std::stoi(argv[++i]) != 0;
+    else if(a == "--cone-ridge") cone_ridge = std::stoi(argv[++i]) != 0;
     else if(a == "--branch-curvature") branch_curvature = std::stod(argv[++i]);
     else return false;
     return true;
@@ -72,6 +74,14 @@ struct Pipeline_options
            p::minimum_spur_angle(spur_angle, p::tree_from_solver(tree_from_solver, p::predicted_extension(predicted,
            p::leaf_curvature(leaf_curvature, p::branch_curvature(branch_curvature, p::kink_angle(kink_angle,
            p::corner_fallback(corner_fallback))))))))))));
+  }
+
+  /// with the exact solver: the parameters and whether the ridge is the cone
+  /// ridge (not with the corner fallback, a linear ridge's option)
+  auto exact_parameters(double tolerance) const
+  {
+    namespace p = Geodesic_ridge::parameters;
+    return p::cone_ridge(cone_ridge && !corner_fallback, p::solver(Geodesic_ridge::Exact_solver(), parameters(tolerance)));
   }
 };
 

@@ -64,7 +64,7 @@ int main(int argc, char** argv)
     const auto& log = solver.log();
     std::cout << "solver '" << rc.statistics.solver << "': " << log.solves << " solves on the extended surface ("
               << log.vertices / log.solves << " vertices each), " << log.seconds << " s\n"
-              << "ridge: " << rc.polylines.size() << " polylines, " << rc.statistics.ridge.cycles << " cycles\n";
+              << "ridge: " << rc.ridge_polylines().size() << " polylines, " << rc.statistics.ridge.cycles << " cycles\n";
     return log.solves == std::size_t(rc.statistics.solves) ? 0 : 1; // every solve went through it
   }
   catch(const Geodesic_ridge::Error& e)

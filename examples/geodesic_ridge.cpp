@@ -9,10 +9,13 @@
 //                  [--refined OUT.ply [--ply-ascii]]
 //                  [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]
 //                  [--query IN.txt [--query-barycentric] --query-out OUT.txt] [--field linear|cone]
-//                  [--corner-fallback]
+//                  [--linear-ridge] [--corner-fallback]
 //                  [--stats OUT.json] [--png OUT.png]
 //   geodesic_ridge MESH --sources FILE --out-dir DIR [--repair] [--tolerance T] [--solver NAME]
-//                  [--corner-fallback]
+//                  [--linear-ridge] [--corner-fallback]
+//
+// With the exact solver the ridge written and drawn is the cone ridge (where
+// the exact solver's cones meet); --linear-ridge gives the linear field's.
 //
 // Exit status: 0 success, 1 bad input (mesh, source, parameter), 2 bad command
 // line, 3 internal error. Every error is one line on stderr; so is every note
@@ -94,9 +97,10 @@ const char* synopsis =
     "                      [--refined OUT.ply [--ply-ascii]]\n"
     "                      [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]\n"
     "                      [--query IN.txt [--query-barycentric] --query-out OUT.txt]\n"
-    "                      [--field linear|cone] [--corner-fallback] [--stats OUT.json] [--png OUT.png]\n"
+    "                      [--field linear|cone] [--linear-ridge] [--corner-fallback] [--stats OUT.json]\n"
+    "                      [--png OUT.png]\n"
     "       geodesic_ridge MESH --sources FILE --out-dir DIR [--repair] [--tolerance T] [--solver NAME]\n"
-    "                      [--corner-fallback]\n"
+    "                      [--linear-ridge] [--corner-fallback]\n"
     "  MESH: a manifold surface, closed or with borders (.off, .obj, .ply; PLY triangle strips too).\n"
     "  Polygons are triangulated (CGAL's triangulate_face rule; a note on stderr says how many, and how\n"
     "  many were not planar); dirty meshes are refused, naming what --repair would fix.\n"
@@ -163,6 +167,7 @@ struct Options
   bool query_barycentric = false;
   Geodesic_ridge::Field field = Geodesic_ridge::Field::linear;
   bool corner_fallback = false;
+  bool linear_ridge = false;
   std::string sources, out_dir;           // many sources: --sources FILE --out-dir DIR
 };
 
@@ -221,13 +226,15 @@ po::options_description describe()
     ("query-out", text("OUT"), "the distances, one per line in the order of IN, 17 digits; 'inf' for a point in "
                                "another connected component than the source's")
     ("field", text("KIND"), "the field the queries evaluate: linear (default, the paper's region-wise linear "
-                            "field) or cone (exact solver only: per face copy, the exact solver's cones; --ridge, "
-                            "--ridge-locations and the picture's ridge are where the cones meet; the refined mesh, "
-                            "the iso-lines and the picture's colours stay linear)")
+                            "field) or cone (exact solver only: per face copy, the exact solver's cones; the "
+                            "refined mesh, the iso-lines and the picture's colours stay linear)")
+    ("linear-ridge", po::bool_switch(),
+     "exact solver: report the ridge of the region-wise linear field (the refined mesh's) instead of the cone "
+     "ridge, where the exact solver's cones meet (parameters::cone_ridge(false))")
     ("corner-fallback", po::bool_switch(),
-     "exact solver: a face copy whose corner no cone sample reaches exactly takes that corner's front from a "
-     "sample next to it (parameters::corner_fallback: more branches found at small tolerances, some placed "
-     "less well)")
+     "exact solver, linear ridge (implies --linear-ridge): a face copy whose corner no cone sample reaches "
+     "exactly takes that corner's front from a sample next to it (parameters::corner_fallback: more branches "
+     "found at small tolerances, some placed less well)")
     ("sources", text("FILE"), "many sources instead of one, one per line: 'V' (a vertex) or 'FACE X Y Z' (a point of "
                               "the face); '#' starts a comment. With --out-dir; in parallel when built with TBB")
     ("out-dir", text("DIR"), "with --sources: for the k-th source (0-based) DIR/ridge_k.polylines.txt and "
@@ -345,6 +352,7 @@ Options parse(int argc, char** argv)
   o.isolines_from_vertices = vm["isolines-from-vertices"].as<bool>();
   o.query_barycentric = vm["query-barycentric"].as<bool>();
   o.corner_fallback = vm["corner-fallback"].as<bool>();
+  o.linear_ridge = vm["linear-ridge"].as<bool>() || o.corner_fallback;
   o.sources = text(vm, "sources"), o.out_dir = text(vm, "out-dir");
   if(o.sources.empty() != o.out_dir.empty()) throw Usage_error("--sources and --out-dir go together");
   if(!o.sources.empty())
@@ -368,6 +376,12 @@ Options parse(int argc, char** argv)
   if(o.corner_fallback && o.field == Geodesic_ridge::Field::cone)
     throw Geodesic_ridge::Invalid_parameter_error("--corner-fallback is for the linear field (the cone field reads "
                                                   "every copy's cones)");
+  if(o.linear_ridge && o.solver != "exact")
+    throw Geodesic_ridge::Invalid_parameter_error("--linear-ridge is for the exact solver (the others have no cone "
+                                                  "ridge)");
+  if(o.linear_ridge && o.field == Geodesic_ridge::Field::cone)
+    throw Geodesic_ridge::Invalid_parameter_error("--linear-ridge is not for the cone field (it reports the cone "
+                                                  "ridge)");
   if(vm.count("tolerance")) o.tolerance = parse_number("tolerance", text(vm, "tolerance"));
   return o;
 }
@@ -531,9 +545,11 @@ GEODESIC_RIDGE_JSON_FIELDS(Ridge_curve_statistics, ridge_segments, junctions, fr
                            dropped_components, piece_joining_segments,
                            pruned_spur_segments, pruned_flat_end_segments)
 GEODESIC_RIDGE_JSON_FIELDS(Cone_ridge_statistics, tolerance, points_moved, junctions_moved, points_kept, points_added,
+                           kept_linear_ridge,
                            largest_move)
 GEODESIC_RIDGE_JSON_FIELDS(Geodesic_ridge_statistics, solver, tolerance, tree_from_solver, solves, predicted_passes,
-                           outer_copies_winning, ring_cap_hit, rough_cut_locus, extended_surface, ridge, cone_ridge)
+                           outer_copies_winning, ring_cap_hit, rough_cut_locus, extended_surface, ridge,
+                           cone_ridge_traced, cone_ridge)
 GEODESIC_RIDGE_JSON_FIELDS(Refined_mesh_statistics, vertices, faces, split_faces, centre_vertices, ridge_edges,
                            unmatched_ridge_segments, largest_disagreement)
 GEODESIC_RIDGE_JSON_FIELDS(Repair_statistics, triangulated_polygons, non_planar_polygons, triangles_from_polygons,
@@ -576,7 +592,8 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
                                       : Json{{"face", file_source.face}, {"barycentric", file_source.coordinates}};
   Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source}, {"tolerance", o.tolerance}, {"solver", o.solver},
                             {"field", o.field == Geodesic_ridge::Field::cone ? "cone" : "linear"},
-                            {"corner_fallback", o.corner_fallback}, {"repair", o.repair}}},
+                            {"linear_ridge", o.linear_ridge}, {"corner_fallback", o.corner_fallback},
+                            {"repair", o.repair}}},
             {"input", {{"file_vertices", map.number_of_file_vertices()},
                        {"file_faces", map.number_of_file_faces()},
                        {"connected_components", cc ? cc->number_of_components() : 1},
@@ -691,7 +708,8 @@ auto with_parameters(const Options& o, const F& f)
   if(o.solver == "heat") return with(Geodesic_ridge::Heat_method_solver<>());
   if(o.solver == "heat-idt") return with(Geodesic_ridge::Heat_method_idt_solver());
   if(o.solver == "dijkstra") return with(Geodesic_ridge::Dijkstra_solver());
-  return f(p::tolerance(o.tolerance, p::field(o.field, p::corner_fallback(o.corner_fallback))));
+  return f(p::tolerance(o.tolerance, p::field(o.field, p::corner_fallback(o.corner_fallback,
+                                                                          p::cone_ridge(!o.linear_ridge)))));
 }
 
 // The ridge of the source.
@@ -719,10 +737,10 @@ void print_summary(const Options& o, const Ridge& ridge, const File_map& map)
             << "extended surface: " << g.extended_surface.number_of_faces << " faces ("
             << double(g.extended_surface.number_of_faces) / s.number_of_faces << " x), "
             << g.extended_surface.rings << " rings, " << g.solves << " " << g.solver << " solves\n"
-            << "ridge: " << ridge.polylines.size() << " polylines, " << g.ridge.junctions << " junctions, "
+            << "ridge: " << ridge.ridge_polylines().size() << " polylines, " << g.ridge.junctions << " junctions, "
             << g.ridge.free_ends << " free ends, " << g.ridge.cycles << " cycles, length "
             << g.ridge.total_length << "; " << ridge.timings.total() << " s\n";
-  if(o.field == Geodesic_ridge::Field::cone)
+  if(g.cone_ridge_traced)
     std::cout << "cone ridge: " << g.cone_ridge.points_moved << " points and " << g.cone_ridge.junctions_moved
               << " junctions moved onto the cones' curves, " << g.cone_ridge.points_kept << " kept, "
               << g.cone_ridge.points_added << " added (tolerance " << g.cone_ridge.tolerance << ")\n";
@@ -944,8 +962,8 @@ int run(const Options& o)
   const auto queries = in_component(cc ? &*cc : nullptr, file_queries);
   const Ridge ridge = compute(mesh, cc ? in_component(*cc, file_source) : file_source, o);
   print_summary(o, ridge, map);
-  // the ridge written and drawn: with the cone field, the cones' own
-  const auto& reported = o.field == Geodesic_ridge::Field::cone ? ridge.cone_polylines : ridge.polylines;
+  // the ridge written and drawn: the cone ridge, unless --linear-ridge
+  const auto& reported = ridge.ridge_polylines();
   // queries answer from the chosen field; the rest is linear
   const auto field = Geodesic_ridge::make_distance_field(mesh, ridge);
   Mesh refined;
@@ -1011,8 +1029,9 @@ Batch_source read_source_line(const std::vector<std::string>& t, const Mesh& mes
 void write_batch_stats(const std::string& filename, const Options& o, const Batch_source& source, const Ridge& rc)
 {
   Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source.text}, {"tolerance", o.tolerance},
-                            {"solver", o.solver}, {"corner_fallback", o.corner_fallback}, {"repair", o.repair}}},
-            {"ridge", {{"polylines", rc.polylines.size()}}},
+                            {"solver", o.solver}, {"linear_ridge", o.linear_ridge},
+                            {"corner_fallback", o.corner_fallback}, {"repair", o.repair}}},
+            {"ridge", {{"polylines", rc.ridge_polylines().size()}}},
             {"statistics", rc.statistics}};
   j["timings_seconds"] = timings_of(rc, 0);
   write_json(filename, j);
@@ -1053,7 +1072,7 @@ int run_batch(const Options& o)
     auto write = [&](const Ridge& rc) {
       const std::size_t k = members[next++];
       const std::string base = (std::filesystem::path(o.out_dir) / ("ridge_" + std::to_string(k))).string();
-      Geodesic_ridge::IO::write_polylines(base + ".polylines.txt", points_of(rc.polylines));
+      Geodesic_ridge::IO::write_polylines(base + ".polylines.txt", points_of(rc.ridge_polylines()));
       write_batch_stats(base + ".json", o, sources[k], rc);
       if(terminal) std::cerr << "\rgeodesic_ridge: " << ++done << " of " << sources.size() << " ridges" << std::flush;
     };

@@ -30,9 +30,11 @@ int main(int argc, char** argv)
                                            Geodesic_ridge::parameters::tolerance(0.025));
     std::cout << ridge.size() << " polylines\n";
 
-    // everything: points with their surface location, regions, statistics
+    // everything: points with their surface location, regions, statistics;
+    // the ridge reported (the cone ridge with the exact solver) and the
+    // linear field's (rc.polylines, the refined mesh's)
     const auto rc = Geodesic_ridge::compute_ridge_curve(mesh, Mesh::Vertex_index(3));
-    const auto& p = rc.polylines.front().front();
+    const auto& p = rc.ridge_polylines().front().front();
     std::cout << "first point " << p.point << " on face " << p.face << " at (" << p.barycentric[0] << ", "
               << p.barycentric[1] << ", " << p.barycentric[2] << ")\n"
               << rc.statistics.ridge.junctions << " junctions, " << rc.statistics.ridge.cycles

@@ -103,6 +103,13 @@ add_test(NAME cli.ridge.corner_fallback.bunny_1k
          COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/bunny_1k.off "-DSOURCE=--source-vertex;5"
                  "-DEXTRA=--corner-fallback" -DOUT=${OUTDIR}/corner_fallback -DGENUS=0
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
+# the linear field's ridge instead of the cone ridge
+add_test(NAME cli.ridge.linear_ridge.bunny_1k
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/bunny_1k.off "-DSOURCE=--source-vertex;5"
+                 "-DEXTRA=--linear-ridge" -DOUT=${OUTDIR}/linear_ridge -DGENUS=0
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
+cli_failure(linear_ridge_fmm      "--linear-ridge is for the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --linear-ridge)
+cli_failure(linear_ridge_cone     "--linear-ridge is not for the cone field" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field cone --linear-ridge)
 cli_failure(corner_fallback_fmm   "--corner-fallback needs the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --corner-fallback)
 cli_failure(corner_fallback_cone  "--corner-fallback is for the linear field" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field cone --corner-fallback)
 cli_failure(unknown_field         "unknown field 'planar'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field planar)

@@ -38,6 +38,6 @@ figure stage2_torus torus_1k.off --source-vertex 0
 # stage 3: the ridge on genus 3 (six cycles)
 figure stage3_3holes 3holes_7k.off --source-vertex 0
 # the cone field's ridge against the linear one, and the fast-marching solver
-figure cone_bunny_linear bunny_1k.off --source-vertex 0
+figure cone_bunny_linear bunny_1k.off --source-vertex 0 --linear-ridge
 figure cone_bunny_cone bunny_1k.off --source-vertex 0 --field cone
 figure solvers_bunny_fmm bunny_1k.off --source-vertex 0 --solver fmm

@@ -41,6 +41,7 @@ struct tree_from_solver_t {};
 struct predicted_extension_t {};
 struct field_t {};
 struct cone_ridge_tolerance_t {};
+struct cone_ridge_t {};
 } // namespace internal_np
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -168,8 +169,8 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle)
 /// instead of 167), but they are placed less precisely (precision p95 within
 /// 0.25 mean edge on 149 pairs instead of 161) and the cones are read at twice
 /// as many samples: off by default (user manual, \ref GeodesicRidgeSecAccuracyRidge).
-/// Not with the cone field, which reads every copy's cones (with samples at
-/// barycentric 0.95 near the corners).
+/// For the linear ridge only: `corner_fallback(true)` makes `cone_ridge`
+/// default to `false` (the two together are an error).
 GEODESIC_RIDGE_NAMED_PARAMETER(bool, corner_fallback)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// `Field::linear` (default) or `Field::cone`: with `cone`, the ridge curve
@@ -179,7 +180,21 @@ GEODESIC_RIDGE_NAMED_PARAMETER(bool, corner_fallback)
 GEODESIC_RIDGE_NAMED_PARAMETER(Field, field)
 
 /// \ingroup PkgGeodesicRidgeNamedParameters
-/// With `field(Field::cone)`: the cone ridge (`Ridge_curve::cone_polylines`)
+/// The ridge reported (`Ridge_curve::ridge_polylines()`, the output of
+/// `compute_geodesic_ridge()`) is the cone ridge (`Ridge_curve::cone_polylines`):
+/// the ridge of the linear field moved onto the curve where the exact
+/// solver's cones meet, with the cones read only on the faces near kinks
+/// inside one sheet (`Exact_solver::cone_ridge_samples()`). Default `true`
+/// with a solver that offers cones (`Exact_solver`) unless
+/// `corner_fallback(true)`, and always with `field(Field::cone)`; `false`
+/// reports the linear field's ridge (`Ridge_curve::polylines`). On the
+/// accuracy benchmark's 168 pairs (user manual, \ref GeodesicRidgeSecCone):
+/// precision p95 within 0.25 mean edge on 167 of them instead of 161, at
+/// 1.05 times the time summed over its meshes (1.3 on 1k-face meshes).
+GEODESIC_RIDGE_NAMED_PARAMETER(bool, cone_ridge)
+
+/// \ingroup PkgGeodesicRidgeNamedParameters
+/// The cone ridge (`Ridge_curve::cone_polylines`)
 /// is split until the curve is within `t` mean edge lengths of the midpoint of
 /// every chord (default `default_cone_ridge_tolerance`; `t` in (0, 1]).
 GEODESIC_RIDGE_NAMED_PARAMETER(double, cone_ridge_tolerance)
@@ -203,7 +218,8 @@ struct Geodesic_ridge_statistics
   Extended_surface_statistics extended_surface;
   /// stage 3
   Ridge_curve_statistics ridge;
-  Cone_ridge_statistics cone_ridge; ///< with `field(Field::cone)`
+  Cone_ridge_statistics cone_ridge; ///< with the cone ridge (`parameters::cone_ridge`)
+  bool cone_ridge_traced = false; ///< the cone ridge was traced: `Ridge_curve::ridge_polylines()` is `cone_polylines`
   bool tree_from_solver = false; ///< the tree followed the solver's distances on M (else fast marching)
 };
 
@@ -214,8 +230,11 @@ struct Geodesic_ridge_statistics
 template <class TriangleMesh, class Point_3>
 struct Ridge_curve
 {
-  /// polylines between junctions and free ends (a closed one repeats its first point)
-  std::vector<std::vector<Ridge_point<Point_3> > > polylines;
+  typedef std::vector<std::vector<Ridge_point<Point_3> > > Polylines;
+  /// the ridge of the region-wise linear field: the boundaries of its cells
+  /// where fronts meet (`regions`, the refined mesh), polylines between
+  /// junctions and free ends (a closed one repeats its first point)
+  Polylines polylines;
   /// per face of M (by face index): the cells of the lower envelope with their linear fields
   std::vector<std::vector<Ridge_region_cell> > regions;
   /// per vertex of M (by index): the smallest of the solver's distances over its
@@ -225,10 +244,11 @@ struct Ridge_curve
   /// with `parameters::field(Field::cone)`, per face of M (by face index): the
   /// cones of its copies that no other copy dominates; empty otherwise
   std::vector<std::vector<Face_cone> > cones;
-  /// with `parameters::field(Field::cone)`: the ridge of the cone field, traced
-  /// from `polylines` (same topology, same ends but the junctions inside faces;
-  /// every chord within `cone_ridge_tolerance` of the curve); empty otherwise
-  std::vector<std::vector<Ridge_point<Point_3> > > cone_polylines;
+  /// with `parameters::cone_ridge` (the default with the exact solver): the
+  /// ridge where the cones meet, traced from `polylines` (same topology, same
+  /// ends but the junctions inside faces; every chord within
+  /// `cone_ridge_tolerance` of the curve); empty otherwise
+  Polylines cone_polylines;
   /// the result of stage 1 (the cut graph K, its tree and its statistics)
   Rough_cut_locus<TriangleMesh> rough_cut_locus;
   /// counts of every stage
@@ -239,6 +259,10 @@ struct Ridge_curve
   /// winning on E's border), `ridge_assembly` (envelopes and ridge, stages 2c
   /// and 3), `cone_ridge`; `rough_cut_locus.timings` splits stage 1
   Timings timings;
+
+  /// the ridge reported: `cone_polylines` if the cone ridge was traced
+  /// (`parameters::cone_ridge`), else `polylines`
+  const Polylines& ridge_polylines() const { return statistics.cone_ridge_traced ? cone_polylines : polylines; }
 };
 
 namespace internal {
@@ -474,16 +498,18 @@ class Extension_growth
 public:
   // With `cones`, the solver's cones of the undominated copies are read at
   // the last solve (at `cone_samples`); with `cones_near_kinks_only` > 0 only
-  // those of copies near kinks of that many degrees (`copies_near_kinks`).
+  // those of copies near kinks of that many degrees (`copies_near_kinks`),
+  // and with `whole_faces` those of every copy of a face that has one.
   Extension_growth(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_source<TriangleMesh>& src,
                    Builder& builder, const Solver& solver, const Growth_schedule& schedule,
                    double mean_edge, Extended_surface<Point>& E, std::vector<Face_copies>& face_copies,
                    std::vector<double>& vertex_distances, Geodesic_ridge_statistics& st, Timings& timings,
                    std::vector<Face_cone>* cones, const std::vector<std::array<double, 3> >& cone_samples,
-                   double cones_near_kinks_only)
+                   double cones_near_kinks_only, bool whole_faces)
     : tm_(tm), src_(src), builder_(builder), solver_(solver), schedule_(schedule),
       E_(E), face_copies_(face_copies), vertex_distances_(vertex_distances), st_(st), timings_(timings),
       cones_(cones), cone_samples_(cone_samples), cones_near_kinks_only_(cones_near_kinks_only),
+      whole_faces_(whole_faces),
       across_(faces_across(tm, fim)), fast_marching_slack_(0.02 * mean_edge), exact_slack_(1e-9 * mean_edge)
   {}
 
@@ -575,7 +601,8 @@ private:
     ++st_.solves;
   }
 
-  // the copies whose cones are read: the undominated ones, or those of them near kinks
+  // the copies whose cones are read: the undominated ones, or those of them
+  // near kinks, or those of faces that have one near kinks
   std::vector<char> cones_wanted(const std::vector<double>& distance) const
   {
     std::vector<char> keep(E_.mesh.number_of_faces(), 0);
@@ -584,7 +611,15 @@ private:
     if(cones_near_kinks_only_ > 0)
     {
       const std::vector<char> near = copies_near_kinks(E_, corner_distances(E_, distance), cones_near_kinks_only_);
-      for(std::size_t c = 0; c < keep.size(); ++c) keep[c] = keep[c] && near[c];
+      std::vector<char> face_near(whole_faces_ ? face_copies_.size() : 0, 0);
+      for(std::size_t c = 0; c < keep.size(); ++c)
+      {
+        keep[c] = keep[c] && near[c];
+        if(whole_faces_ && keep[c]) face_near[E_.original_face[c]] = 1;
+      }
+      if(whole_faces_)
+        for(const Face_copies& fc : face_copies_)
+          for(std::size_t c : fc.copies) keep[c] = face_near[E_.original_face[c]];
     }
     return keep;
   }
@@ -644,6 +679,7 @@ private:
   std::vector<Face_cone>* const cones_;
   const std::vector<std::array<double, 3> >& cone_samples_;
   const double cones_near_kinks_only_;
+  const bool whole_faces_;
   const Faces_across across_;
   // a copy that wins on the border by less than this is no winner: noise
   // between neighbouring fronts (fast marching), round-off (the exact solver)
@@ -664,7 +700,7 @@ struct Pipeline_options
 {
   int initial_rings, extension_step, maximum_rings, maximum_solves;
   double minimum_angle, kink_angle, cone_ridge_tolerance;
-  bool tree_from_solver, predicted, corner_fallback;
+  bool tree_from_solver, predicted, corner_fallback, cone_ridge;
   Field field;
 };
 
@@ -687,6 +723,14 @@ Pipeline_options pipeline_options(const NamedParameters& np, const Solver& solve
       np, default_cone_ridge_tolerance, std::numeric_limits<double>::min(), 1, false, "cone ridge tolerance", "(0, 1]");
   o.tree_from_solver = choose_parameter(get_parameter(np, internal_np::tree_from_solver_t()), false);
   o.corner_fallback = choose_parameter(get_parameter(np, internal_np::corner_fallback_t()), false);
+  // the cone ridge: by default with cones, unless the linear ridge's corner fallback is asked for
+  const bool has_cones = Geodesic_solver_traits<std::decay_t<Solver> >::has_cones;
+  o.cone_ridge = o.field == Field::cone ||
+                 choose_parameter(get_parameter(np, internal_np::cone_ridge_t()), has_cones && !o.corner_fallback);
+  if(o.cone_ridge && !has_cones)
+    throw Invalid_parameter_error(std::string("the cone ridge needs a solver with cones (the exact solver), not '") + solver.name() + "'");
+  if(o.cone_ridge && o.corner_fallback)
+    throw Invalid_parameter_error("corner_fallback is for the linear ridge (the cone ridge reads its cones near the corners)");
   if(o.initial_rings < 0 || o.maximum_rings < o.initial_rings || o.extension_step < 1)
     throw Invalid_parameter_error("extension rings: need 0 <= initial_rings <= maximum_rings and extension_step >= 1");
   if(o.maximum_solves < 1) throw Invalid_parameter_error("maximum_solves must be at least 1");
@@ -739,7 +783,7 @@ public:
     }
     timings_.time("ridge_assembly", [&] { assemble_ridge(); });
     check_ridge_topology();
-    if(options_.field == Field::cone) timings_.time("cone_ridge", [&] { trace_cones(); });
+    if(options_.cone_ridge) timings_.time("cone_ridge", [&] { trace_cones(); });
     return std::move(result_);
   }
 
@@ -783,7 +827,9 @@ private:
   // copy's: measured on 6 sources of bunny_1k, armadillo_2k and teddy_3k, the
   // same ridges (a few split copies fewer, recall and precision unchanged), in
   // half the time on 10k-face meshes (path queries for every copy cost about
-  // one more solve).
+  // one more solve). The cone ridge reads them on every undominated copy of
+  // such a face (its two sides' lowest copies both need cones); the cone
+  // field on every undominated copy.
   void grow_and_solve(Builder& builder)
   {
     const double kink_filter_share = 0.25;
@@ -792,25 +838,37 @@ private:
                                    options_.predicted};
     Extension_growth<TriangleMesh, FaceIndexMap, Builder, Solver, Point> growth(
         tm_, maps_.fim, src_, builder, solver_, schedule, mean_edge_, E_, face_copies_, result_.vertex_distances, st_,
-        timings_, cone_field || split_at_kinks() ? &copy_cones_ : nullptr, cone_samples(),
-        cone_field ? 0 : kink_filter_share * options_.kink_angle);
+        timings_, options_.cone_ridge || split_at_kinks() ? &copy_cones_ : nullptr, cone_samples(),
+        cone_field ? 0 : kink_filter_share * options_.kink_angle, options_.cone_ridge);
     growth.run();
     copy_corners_ = growth.take_corner_distances();
     st_.extended_surface = E_.statistics;
-    if(!cone_field) return;
-    const std::size_t samples = Exact_solver::cone_samples().size();
-    result_.cones.assign(num_faces(tm_), {});
+    if(!options_.cone_ridge) return;
+    // per face of M, the cones of its undominated copies, where they were read
+    const std::size_t samples = cone_samples().size();
+    std::vector<std::vector<Face_cone> >& cones = cone_field ? result_.cones : face_cones_;
+    cones.assign(num_faces(tm_), {});
     for(std::size_t f = 0; f < face_copies_.size(); ++f)
       for(std::size_t c : face_copies_[f].copies)
-        for(std::size_t i = 0; i < samples; ++i) result_.cones[f].push_back(copy_cones_[samples * c + i]);
+        if(cones_read(c))
+          for(std::size_t i = 0; i < samples; ++i) cones[f].push_back(copy_cones_[samples * c + i]);
+  }
+
+  // whether the solver read copy c's cones (an unread cone has no apex)
+  bool cones_read(std::size_t c) const
+  {
+    const std::size_t samples = cone_samples().size();
+    if(samples * (c + 1) > copy_cones_.size()) return false;
+    const auto& apex = copy_cones_[samples * c].apex;
+    return std::abs(apex[0] + apex[1] + apex[2] - 1) <= 0.5;
   }
 
   bool split_at_kinks() const { return solver_has_cones && options_.kink_angle > 0; }
-  // the cone field's samples have no fallbacks
-  bool corner_fallback() const { return options_.corner_fallback && options_.field != Field::cone; }
+  bool corner_fallback() const { return options_.corner_fallback; }
   const std::vector<std::array<double, 3> >& cone_samples() const
   {
     if(options_.field == Field::cone) return Exact_solver::cone_samples();
+    if(options_.cone_ridge) return Exact_solver::cone_ridge_samples();
     return corner_fallback() ? Exact_solver::corner_fallback_samples() : Exact_solver::corner_samples();
   }
 
@@ -857,8 +915,12 @@ private:
 
   void trace_cones()
   {
-    result_.cone_polylines = trace_cone_ridge(tm_, maps_.vpm, maps_.fim, result_.polylines, result_.cones,
-                                              options_.cone_ridge_tolerance * mean_edge_, mean_edge_, st_.cone_ridge);
+    result_.cone_polylines = trace_cone_ridge(tm_, maps_.vpm, maps_.vim, maps_.fim, result_.polylines,
+                                              options_.field == Field::cone ? result_.cones : face_cones_,
+                                              cone_samples(), options_.cone_ridge_tolerance * mean_edge_, mean_edge_,
+                                              st_.cone_ridge);
+    st_.cone_ridge_traced = true;
+    std::vector<std::vector<Face_cone> >().swap(face_cones_);
   }
 
   const TriangleMesh& tm_;
@@ -876,6 +938,7 @@ private:
   Extended_surface<Point> E_;
   std::vector<Face_copies> face_copies_;
   std::vector<Face_cone> copy_cones_;
+  std::vector<std::vector<Face_cone> > face_cones_; // for the cone ridge without the cone field
   std::vector<std::array<double, 3> > copy_corners_; // per copy of E, at the last solve
 };
 
@@ -985,18 +1048,25 @@ auto ridge_curve_impl(const TriangleMesh& tm, const Geodesic_source<TriangleMesh
 ///     \cgalParamDefault{`default_kink_angle` (60)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{corner_fallback}
-///     \cgalParamDescription{with the exact solver's kink split, a corner that no sample's front reaches exactly takes its front from a sample nearer to it: more branches found, less precisely placed}
+///     \cgalParamDescription{with the exact solver's kink split of the linear ridge, a corner that no sample's front reaches exactly takes its front from a sample nearer to it: more branches found, less precisely placed}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
+///     \cgalParamExtra{not with the cone ridge: `true` makes `cone_ridge` default to `false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{cone_ridge}
+///     \cgalParamDescription{the ridge reported (`Ridge_curve::ridge_polylines()`, `compute_geodesic_ridge()`) is the cone ridge (`Ridge_curve::cone_polylines`), where the exact solver's cones meet, read on the faces near kinks; `false`: the linear field's (`Ridge_curve::polylines`)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true` with a solver that offers cones (`Exact_solver`) and without `corner_fallback(true)`; always with `field(Field::cone)`}
+///     \cgalParamExtra{`true` needs a solver with cones}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{field}
-///     \cgalParamDescription{`Field::cone` also keeps the cones of the copies (`Ridge_curve::cones`) and traces the cone ridge (`Ridge_curve::cone_polylines`)}
+///     \cgalParamDescription{`Field::cone` also keeps the cones of every undominated copy (`Ridge_curve::cones`), for the cone field of `make_distance_field()`}
 ///     \cgalParamType{`Field`}
 ///     \cgalParamDefault{`Field::linear`}
 ///     \cgalParamExtra{`Field::cone` needs the exact solver}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{cone_ridge_tolerance}
-///     \cgalParamDescription{with `field(Field::cone)`: the cone ridge is split until the curve is within this many mean edge lengths of every chord's midpoint}
+///     \cgalParamDescription{the cone ridge is split until the curve is within this many mean edge lengths of every chord's midpoint}
 ///     \cgalParamType{`double`, in (0, 1]}
 ///     \cgalParamDefault{`default_cone_ridge_tolerance` (0.001)}
 ///   \cgalParamNEnd
@@ -1058,8 +1128,8 @@ auto compute_ridge_curve(const TriangleMesh& tm,
 /// \ingroup PkgGeodesicRidgeRef
 /// \brief computes the geodesic ridge of `source` (a vertex or a
 /// `Face_location`) on `tm` and writes its polylines (`std::vector<Point_3>`,
-/// between junctions and free ends) to `out`: the one-shot version of
-/// `compute_ridge_curve()`.
+/// between junctions and free ends; `Ridge_curve::ridge_polylines()`) to
+/// `out`: the one-shot version of `compute_ridge_curve()`.
 ///
 /// \tparam OutputIterator an output iterator accepting `std::vector<Point_3>`
 /// \param out the output iterator
@@ -1071,7 +1141,7 @@ template <class TriangleMesh, class Source, class OutputIterator,
 OutputIterator compute_geodesic_ridge(const TriangleMesh& tm, const Source& source, OutputIterator out,
                                       const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return ridge_polyline_points(compute_ridge_curve(tm, source, np).polylines, out);
+  return ridge_polyline_points(compute_ridge_curve(tm, source, np).ridge_polylines(), out);
 }
 
 } // namespace Geodesic_ridge

@@ -182,7 +182,7 @@ OutputIterator compute_geodesic_ridges(const TriangleMesh& tm, const SourceRange
   auto polylines_of = [&out](const auto& rc) {
     typedef std::decay_t<decltype(rc.polylines[0][0].point)> Point_3;
     std::vector<std::vector<Point_3> > polylines;
-    ridge_polyline_points(rc.polylines, std::back_inserter(polylines));
+    ridge_polyline_points(rc.ridge_polylines(), std::back_inserter(polylines));
     *out++ = std::move(polylines);
   };
   compute_ridge_curves<ConcurrencyTag>(tm, sources, boost::make_function_output_iterator(polylines_of), np);

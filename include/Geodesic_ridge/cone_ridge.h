@@ -28,6 +28,7 @@
 #define GEODESIC_RIDGE_CONE_RIDGE_H
 
 #include <Geodesic_ridge/internal/faces_by_index.h>
+#include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/lower_envelope.h>
 #include <Geodesic_ridge/ridge_curve.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>
@@ -41,6 +42,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -56,6 +58,9 @@ struct Cone_ridge_statistics
   std::size_t points_kept = 0;     ///< at vertices, free ends, or without two fronts in the face
   std::size_t points_added = 0;    ///< inserted so that the chords follow the curve
   double largest_move = 0;         ///< the largest distance a point moved, in mean edge lengths
+  /// the traced curve's graph (with the border) had other components or
+  /// cycles than the linear ridge's, so the cone ridge is the linear ridge
+  bool kept_linear_ridge = false;
 };
 
 namespace internal {
@@ -103,12 +108,14 @@ struct Face_plane
 };
 
 /// The cone field of one face: `count` cones, S per copy (copy-major), S the
-/// number of `Exact_solver::cone_samples()`.
+/// number of `samples` (`Exact_solver::cone_samples()`, or
+/// `Exact_solver::cone_ridge_samples()` for the cone ridge alone).
 class Face_cone_field
 {
 public:
-  Face_cone_field(const Face_plane& plane, const Face_cone* cones, std::size_t count)
-      : plane_(plane), cones_(cones), count_(count)
+  Face_cone_field(const Face_plane& plane, const Face_cone* cones, std::size_t count,
+                  const std::vector<std::array<double, 3> >& samples = Exact_solver::cone_samples())
+      : plane_(plane), cones_(cones), count_(count), samples_(&samples)
   {}
 
   std::size_t number_of_copies() const { return count_ / samples().size(); }
@@ -141,7 +148,7 @@ public:
   const Face_plane& plane() const { return plane_; }
 
 private:
-  static const std::vector<std::array<double, 3> >& samples() { return Exact_solver::cone_samples(); }
+  const std::vector<std::array<double, 3> >& samples() const { return *samples_; }
 
   std::size_t nearest_sample(const Face_plane::Point_2& x) const
   {
@@ -163,6 +170,7 @@ private:
   Face_plane plane_;
   const Face_cone* cones_;
   std::size_t count_;
+  const std::vector<std::array<double, 3> >* samples_;
 };
 
 /// Traces the ridge of the cone field from the ridge of the linear field (see
@@ -181,8 +189,10 @@ class Cone_ridge_tracer
 
 public:
   Cone_ridge_tracer(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim,
-                    const std::vector<std::vector<Face_cone> >& cones, double tolerance, double mean_edge)
-      : tm_(tm), fim_(fim), faces_(tm, vpm, fim), cones_(cones), tolerance_(tolerance), mean_edge_(mean_edge)
+                    const std::vector<std::vector<Face_cone> >& cones,
+                    const std::vector<std::array<double, 3> >& samples, double tolerance, double mean_edge)
+      : tm_(tm), fim_(fim), faces_(tm, vpm, fim), cones_(cones), samples_(samples), tolerance_(tolerance),
+        mean_edge_(mean_edge)
   {}
 
   std::vector<std::vector<Ridge_point<Point> > > trace(std::vector<std::vector<Ridge_point<Point> > > linear,
@@ -197,9 +207,22 @@ public:
     st.tolerance = tolerance_;
     // one point of the ridge, rounded in two faces, comes twice this close
     const double same_point = 1e-9 * mean_edge_;
-    // a point is moved once: junctions end several polylines, and a point on
-    // an edge may come twice in a row (once per face)
-    std::map<std::array<double, 3>, Ridge_point<Point> > moved_at;
+    // A point is moved once (junctions end several polylines), and the ridge
+    // keeps the linear ridge's graph: its points are told apart as there, by
+    // face, coordinates and point. A point on an edge may come twice in a row,
+    // once per face, rounded differently: the second follows the first.
+    typedef std::tuple<std::size_t, double, double, double, double, double, double> Identity;
+    auto identity = [](const Ridge_point<Point>& p) {
+      return Identity(p.face, p.barycentric[0], p.barycentric[1], p.barycentric[2], CGAL::to_double(p.point.x()),
+                      CGAL::to_double(p.point.y()), CGAL::to_double(p.point.z()));
+    };
+    std::map<Identity, Ridge_point<Point> > moved_of;
+    std::map<std::array<double, 3>, Ridge_point<Point> > moved_on_edges; // by the point before the move
+    // where each point moved to, and from where: two points of the linear
+    // ridge must not move onto one (a mesh edge that the linear ridge crosses
+    // twice, along which the face's lowest cone changes once: both would move
+    // to that change, closing a cycle; the cube's ridge from a point of a face)
+    std::map<std::array<double, 3>, std::array<double, 3> > moved_from;
     std::vector<std::vector<Ridge_point<Point> > > result;
     for(const auto& pl : linear)
     {
@@ -208,7 +231,19 @@ public:
       {
         const std::array<double, 3> key = {{CGAL::to_double(pl[i].point.x()), CGAL::to_double(pl[i].point.y()),
                                             CGAL::to_double(pl[i].point.z())}};
-        if(const Ridge_point<Point>* done = find_near(moved_at, key, same_point)) { moved[i] = *done; continue; }
+        const Identity id = identity(pl[i]);
+        if(const auto it = moved_of.find(id); it != moved_of.end())
+        {
+          moved[i] = it->second;
+          continue;
+        }
+        const bool on_edge = zeros(pl[i].barycentric) == 1;
+        if(const Ridge_point<Point>* twin = on_edge ? find_near(moved_on_edges, key, same_point) : nullptr)
+        {
+          moved[i] = in_face_of(*twin, pl[i]);
+          moved_of.emplace(id, moved[i]);
+          continue;
+        }
         // the nearest other points before and after it
         auto same = [&](std::size_t j) { return CGAL::squared_distance(pl[j].point, pl[i].point) <= same_point * same_point; };
         std::size_t before = i, after = i;
@@ -216,12 +251,24 @@ public:
         while(after + 1 < pl.size() && same(after)) ++after;
         const bool has_before = !same(before), has_after = !same(after);
         const bool end = i == 0 || i + 1 == pl.size();
+        const Cone_ridge_statistics counts = st;
         if(!has_before && !has_after) moved[i] = pl[i];
         else if(end || !has_before || !has_after)
           moved[i] = move_end(pl[i], pl[has_before ? before : after].point, st);
         else
           moved[i] = move_interior(pl[i], pl[before].point, pl[after].point, st);
-        moved_at.emplace(key, moved[i]);
+        const std::array<double, 3> to = {{CGAL::to_double(moved[i].point.x()), CGAL::to_double(moved[i].point.y()),
+                                           CGAL::to_double(moved[i].point.z())}};
+        if(find_near(moved_from, to, same_point))
+        { // another point moved here first: this one stays
+          moved[i] = pl[i];
+          st = counts;
+          ++st.points_kept;
+        }
+        else
+          moved_from.emplace(to, key);
+        moved_of.emplace(id, moved[i]);
+        if(on_edge) moved_on_edges.emplace(key, moved[i]);
       }
       result.emplace_back();
       std::vector<Ridge_point<Point> >& out = result.back();
@@ -236,8 +283,9 @@ public:
 
 private:
   // the entry of `points` within `distance` of `key` in every coordinate, if any
-  static const Ridge_point<Point>* find_near(const std::map<std::array<double, 3>, Ridge_point<Point> >& points,
-                                             const std::array<double, 3>& key, double distance)
+  template <class Value>
+  static const Value* find_near(const std::map<std::array<double, 3>, Value>& points, const std::array<double, 3>& key,
+                                double distance)
   {
     for(auto it = points.lower_bound({{key[0] - distance, -HUGE_VAL, -HUGE_VAL}});
         it != points.end() && it->first[0] <= key[0] + distance; ++it)
@@ -245,11 +293,31 @@ private:
     return nullptr;
   }
 
+  // The moved point `done` of p or of p's twin (the same point in the face
+  // across p's edge, or around p's vertex), in p's face: the ridge's graph
+  // keeps the twins apart, as the linear ridge does (the ridge along a mesh
+  // edge may run on both sides of it).
+  Ridge_point<Point> in_face_of(const Ridge_point<Point>& done, const Ridge_point<Point>& p) const
+  {
+    if(done.face == p.face) return done;
+    if(zeros(p.barycentric) != 1 || zeros(done.barycentric) != 1) return p; // at a vertex: not moved
+    int k = 0;
+    while(p.barycentric[k] != 0) ++k;
+    const auto c = faces_.corner_points(p.face);
+    const auto& a = c[(k + 1) % 3];
+    const auto& b = c[(k + 2) % 3];
+    const double t = CGAL::to_double((done.point - a) * (b - a)) / CGAL::to_double((b - a).squared_length());
+    Bary along = {{0, 0, 0}};
+    along[(k + 1) % 3] = 1 - (std::min)(1.0, (std::max)(0.0, t));
+    along[(k + 2) % 3] = (std::min)(1.0, (std::max)(0.0, t));
+    return make_point(p, p.face, along);
+  }
+
   Face_plane plane_of(std::size_t f) const { return Face_plane(faces_.corner_points(f)); }
 
   Face_cone_field field_of(std::size_t f) const
   {
-    return Face_cone_field(plane_of(f), cones_[f].data(), cones_[f].size());
+    return Face_cone_field(plane_of(f), cones_[f].data(), cones_[f].size(), samples_);
   }
 
   // the plane vector, in face f, of a 3D vector given in 3D (projected)
@@ -540,20 +608,92 @@ private:
   FaceIndexMap fim_;
   Faces_by_index<TriangleMesh, VertexPointMap> faces_;
   const std::vector<std::vector<Face_cone> >& cones_;
+  const std::vector<std::array<double, 3> >& samples_;
   double tolerance_, mean_edge_;
 };
 
+// The components and independent cycles of the graph of `polylines` with the
+// border loops of `tm` as nodes (a point on a border edge or at a border
+// vertex is joined to its loop); points are told apart by face, coordinates
+// and point.
+template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap, class Point>
+std::pair<std::size_t, std::size_t> ridge_graph_with_border(const TriangleMesh& tm, VertexPointMap vpm,
+                                                            VertexIndexMap vim, FaceIndexMap fim,
+                                                            const std::vector<std::vector<Ridge_point<Point> > >& polylines)
+{
+  const Faces_by_index<TriangleMesh, VertexPointMap> faces(tm, vpm, fim);
+  Union_find loops(num_vertices(tm)); // the border vertices, joined along each loop
+  std::vector<char> on_border(num_vertices(tm), 0);
+  for(auto h : halfedges(tm))
+    if(is_border(h, tm))
+    {
+      const std::size_t a = get(vim, source(h, tm)), b = get(vim, target(h, tm));
+      on_border[a] = on_border[b] = 1;
+      loops.unite(a, b);
+    }
+  // nodes: the loops' roots (by vertex index), then the ridge points
+  std::map<std::tuple<std::size_t, double, double, double, double, double, double>, std::size_t> id;
+  const std::size_t first_point = num_vertices(tm);
+  std::vector<std::pair<std::size_t, std::size_t> > edges;
+  auto node = [&](const Ridge_point<Point>& p) {
+    const auto [it, added] = id.emplace(std::make_tuple(p.face, p.barycentric[0], p.barycentric[1], p.barycentric[2],
+                                                        CGAL::to_double(p.point.x()), CGAL::to_double(p.point.y()),
+                                                        CGAL::to_double(p.point.z())),
+                                        first_point + id.size());
+    if(added)
+    {
+      const auto h = faces.corner_halfedges(p.face);
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t v = get(vim, source(h[k], tm));
+        if((p.barycentric[k] == 1 && on_border[v]) ||
+           (p.barycentric[(k + 2) % 3] == 0 && is_border(opposite(h[k], tm), tm)))
+        {
+          edges.emplace_back(it->second, loops.find(v));
+          break;
+        }
+      }
+    }
+    return it->second;
+  };
+  for(const auto& pl : polylines)
+    for(std::size_t i = 0; i + 1 < pl.size(); ++i)
+    {
+      const std::size_t a = node(pl[i]), b = node(pl[i + 1]);
+      if(a != b) edges.emplace_back(a, b);
+    }
+  Union_find graph(first_point + id.size());
+  std::set<std::size_t> nodes;
+  for(const auto& [p, i] : id) nodes.insert(i);
+  for(const auto& e : edges)
+  {
+    nodes.insert(e.second);
+    graph.unite(e.first, e.second);
+  }
+  std::set<std::size_t> roots;
+  for(std::size_t n : nodes) roots.insert(graph.find(n));
+  return {roots.size(), edges.size() + roots.size() - nodes.size()};
+}
+
 /// The cone ridge traced from the linear ridge `linear`.
-template <class TriangleMesh, class VertexPointMap, class FaceIndexMap, class Point>
+template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap, class Point>
 std::vector<std::vector<Ridge_point<Point> > >
-trace_cone_ridge(const TriangleMesh& tm, VertexPointMap vpm, FaceIndexMap fim,
+trace_cone_ridge(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim,
                  const std::vector<std::vector<Ridge_point<Point> > >& linear,
-                 const std::vector<std::vector<Face_cone> >& cones, double tolerance, double mean_edge,
+                 const std::vector<std::vector<Face_cone> >& cones,
+                 const std::vector<std::array<double, 3> >& samples, double tolerance, double mean_edge,
                  Cone_ridge_statistics& st)
 {
-  Cone_ridge_tracer<TriangleMesh, VertexPointMap, FaceIndexMap, Point> tracer(tm, vpm, fim, cones, tolerance,
+  Cone_ridge_tracer<TriangleMesh, VertexPointMap, FaceIndexMap, Point> tracer(tm, vpm, fim, cones, samples, tolerance,
                                                                               mean_edge);
-  return tracer.trace(linear, st);
+  auto traced = tracer.trace(linear, st);
+  // the cone ridge keeps the linear ridge's graph, or it is the linear ridge
+  if(ridge_graph_with_border(tm, vpm, vim, fim, traced) != ridge_graph_with_border(tm, vpm, vim, fim, linear))
+  {
+    st.kept_linear_ridge = true;
+    return linear;
+  }
+  return traced;
 }
 
 } // namespace internal
