@@ -740,7 +740,9 @@ void print_summary(const Options& o, const Ridge& ridge, const File_map& map)
             << "ridge: " << ridge.ridge_polylines().size() << " polylines, " << g.ridge.junctions << " junctions, "
             << g.ridge.free_ends << " free ends, " << g.ridge.cycles << " cycles, length "
             << g.ridge.total_length << "; " << ridge.timings.total() << " s\n";
-  if(g.cone_ridge_traced)
+  if(g.cone_ridge.kept_linear_ridge)
+    std::cout << "cone ridge: the traced curve changed the ridge's graph; the linear ridge is written\n";
+  else if(g.cone_ridge_traced)
     std::cout << "cone ridge: " << g.cone_ridge.points_moved << " points and " << g.cone_ridge.junctions_moved
               << " junctions moved onto the cones' curves, " << g.cone_ridge.points_kept << " kept, "
               << g.cone_ridge.points_added << " added (tolerance " << g.cone_ridge.tolerance << ")\n";
@@ -1031,7 +1033,7 @@ void write_batch_stats(const std::string& filename, const Options& o, const Batc
   Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source.text}, {"tolerance", o.tolerance},
                             {"solver", o.solver}, {"linear_ridge", o.linear_ridge},
                             {"corner_fallback", o.corner_fallback}, {"repair", o.repair}}},
-            {"ridge", {{"polylines", rc.ridge_polylines().size()}}},
+            {"ridge", {{"polylines", rc.polylines.size()}, {"cone_polylines", rc.cone_polylines.size()}}},
             {"statistics", rc.statistics}};
   j["timings_seconds"] = timings_of(rc, 0);
   write_json(filename, j);

@@ -661,6 +661,7 @@ TEST_CASE("the ridge reported: the cone ridge with the exact solver, else the li
     INFO(name << " source 0");
     const Result cone = Geodesic_ridge::compute_ridge_curve(m, s);
     REQUIRE(cone.statistics.cone_ridge_traced);
+    CHECK_FALSE(cone.statistics.cone_ridge.kept_linear_ridge);
     CHECK(&cone.ridge_polylines() == &cone.cone_polylines);
     CHECK(cone.cone_polylines.size() == cone.polylines.size()); // same topology
     // bunny_1k from vertex 0 has kinks inside one sheet, the torus none (there
@@ -693,6 +694,9 @@ TEST_CASE("the ridge reported: the cone ridge with the exact solver, else the li
                       m, vertex_descriptor(0), p::cone_ridge(true, p::solver(Geodesic_ridge::Fast_marching_solver()))),
                   Geodesic_ridge::Invalid_parameter_error);
   CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0), p::cone_ridge(true, p::corner_fallback(true))),
+                  Geodesic_ridge::Invalid_parameter_error);
+  CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(
+                      m, vertex_descriptor(0), p::cone_ridge(false, p::field(Geodesic_ridge::Field::cone))),
                   Geodesic_ridge::Invalid_parameter_error);
 }
 
@@ -996,6 +1000,10 @@ TEST_CASE("surfaces with a border: analytic cases", "[ridge_curve][border]")
     CHECK(rc.rough_cut_locus.statistics.genus == c.genus);
     CHECK(rc.statistics.ridge.components == 1);
     CHECK(rc.statistics.ridge.cycles == std::size_t(c.cycle_rank()));
+    if(rc.ridge_polylines().empty()) return; // flat and simply connected: no ridge
+    const auto [components, cycles] = ridge_with_border_topology(c.mesh, rc.ridge_polylines());
+    CHECK(components == 1);
+    CHECK(cycles == std::size_t(c.cycle_rank()));
   };
   const Flat_square square = make_flat_square(10, 0.2, seed);
   const Flat_L_domain ell = make_flat_L_domain(8, 0.2, seed);

@@ -184,10 +184,13 @@ GEODESIC_RIDGE_NAMED_PARAMETER(Field, field)
 /// `compute_geodesic_ridge()`) is the cone ridge (`Ridge_curve::cone_polylines`):
 /// the ridge of the linear field moved onto the curve where the exact
 /// solver's cones meet, with the cones read only on the faces near kinks
-/// inside one sheet (`Exact_solver::cone_ridge_samples()`). Default `true`
-/// with a solver that offers cones (`Exact_solver`) unless
-/// `corner_fallback(true)`, and always with `field(Field::cone)`; `false`
-/// reports the linear field's ridge (`Ridge_curve::polylines`). On the
+/// inside one sheet (`Exact_solver::cone_ridge_samples()`; with
+/// `kink_angle(0)` on every copy). Default `true` with a solver that offers
+/// cones (`Exact_solver`) unless `corner_fallback(true)`, and always with
+/// `field(Field::cone)`; `false` reports the linear field's ridge
+/// (`Ridge_curve::polylines`). The kink split sees the cone ridge's samples
+/// too, so the linear field's ridge of a default run may differ slightly
+/// from that of `cone_ridge(false)`. On the
 /// accuracy benchmark's 168 pairs (user manual, \ref GeodesicRidgeSecCone):
 /// precision p95 within 0.25 mean edge on 167 of them instead of 161, at
 /// 1.05 times the time summed over its meshes (1.3 on 1k-face meshes).
@@ -432,7 +435,7 @@ void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vecto
     else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), cones, wanted, samples);
   }
   else
-    throw Invalid_parameter_error(std::string("the cone field needs a solver with cones (the exact solver), not '") + solver.name() + "'");
+    throw Invalid_parameter_error(std::string("the cones (the cone field, the cone ridge) need a solver that offers them (the exact solver), not '") + solver.name() + "'");
 }
 
 // Fast marching over E from the corners of its first `anchor.size()` copies,
@@ -725,8 +728,10 @@ Pipeline_options pipeline_options(const NamedParameters& np, const Solver& solve
   o.corner_fallback = choose_parameter(get_parameter(np, internal_np::corner_fallback_t()), false);
   // the cone ridge: by default with cones, unless the linear ridge's corner fallback is asked for
   const bool has_cones = Geodesic_solver_traits<std::decay_t<Solver> >::has_cones;
-  o.cone_ridge = o.field == Field::cone ||
-                 choose_parameter(get_parameter(np, internal_np::cone_ridge_t()), has_cones && !o.corner_fallback);
+  o.cone_ridge = choose_parameter(get_parameter(np, internal_np::cone_ridge_t()),
+                                  o.field == Field::cone || (has_cones && !o.corner_fallback));
+  if(o.field == Field::cone && !o.cone_ridge)
+    throw Invalid_parameter_error("cone_ridge(false) with the cone field: the cone field's ridge is the cone ridge");
   if(o.cone_ridge && !has_cones)
     throw Invalid_parameter_error(std::string("the cone ridge needs a solver with cones (the exact solver), not '") + solver.name() + "'");
   if(o.cone_ridge && o.corner_fallback)
@@ -982,8 +987,10 @@ auto ridge_curve_impl(const TriangleMesh& tm, const Geodesic_source<TriangleMesh
 /// \pre `source` is a vertex of `tm`, or a face of `tm` with finite,
 ///      non-negative barycentric coordinates that sum to 1 within 1e-9
 ///      (`Invalid_source_error` otherwise).
-/// \pre Every named parameter is in its range, and `field(Field::cone)` comes
-///      with the exact solver (`Invalid_parameter_error` otherwise, thrown
+/// \pre Every named parameter is in its range; `field(Field::cone)` and
+///      `cone_ridge(true)` come with the exact solver (a solver with cones),
+///      `corner_fallback(true)` without the cone ridge, and `cone_ridge(false)`
+///      without the cone field (`Invalid_parameter_error` otherwise, thrown
 ///      before any work).
 ///
 /// \cgalNamedParamsBegin

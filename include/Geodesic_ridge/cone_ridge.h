@@ -4,8 +4,10 @@
 // The cone field of a face, and the ridge of the cone field (beyond the paper,
 // exact solver).
 //
-// Per face copy the exact solver gives S cones (one per
-// `Exact_solver::cone_samples()` point): a point of the face takes, per copy,
+// Per face copy the exact solver gives S cones (one per sample point:
+// `Exact_solver::cone_samples()` for the cone field,
+// `Exact_solver::cone_ridge_samples()` for the default cone ridge, read on
+// the faces near kinks only): a point of the face takes, per copy,
 // the cone of the nearest sample point, the distance in the face's plane to
 // the cone's apex plus its offset; the field is the lowest over the copies.
 //
@@ -174,7 +176,9 @@ private:
 };
 
 /// Traces the ridge of the cone field from the ridge of the linear field (see
-/// the top of this file). `cones`: `Ridge_curve::cones`; `tolerance` absolute.
+/// the top of this file). `cones`: per face, the cones of its copies
+/// (`Ridge_curve::cones` with the cone field; empty where none were read);
+/// `tolerance` absolute.
 template <class TriangleMesh, class VertexPointMap, class FaceIndexMap, class Point>
 class Cone_ridge_tracer
 {
@@ -198,12 +202,7 @@ public:
   std::vector<std::vector<Ridge_point<Point> > > trace(std::vector<std::vector<Ridge_point<Point> > > linear,
                                                       Cone_ridge_statistics& st)
   {
-    // the ridge's barycentric coordinates are rounded from exact ones: a point
-    // on an edge may come with a coordinate of the order of the rounding
-    for(auto& pl : linear)
-      for(auto& p : pl)
-        for(double& b : p.barycentric)
-          if(std::abs(b) <= rounded_zero) b = 0;
+    round_near_zero(linear);
     st.tolerance = tolerance_;
     // one point of the ridge, rounded in two faces, comes twice this close
     const double same_point = 1e-9 * mean_edge_;
@@ -281,6 +280,16 @@ public:
     return result;
   }
 
+  // The ridge's barycentric coordinates are rounded from exact ones: a point
+  // on an edge may come with a coordinate of the order of the rounding.
+  static void round_near_zero(std::vector<std::vector<Ridge_point<Point> > >& polylines)
+  {
+    for(auto& pl : polylines)
+      for(auto& p : pl)
+        for(double& b : p.barycentric)
+          if(std::abs(b) <= rounded_zero) b = 0;
+  }
+
 private:
   // the entry of `points` within `distance` of `key` in every coordinate, if any
   template <class Value>
@@ -293,8 +302,8 @@ private:
     return nullptr;
   }
 
-  // The moved point `done` of p or of p's twin (the same point in the face
-  // across p's edge, or around p's vertex), in p's face: the ridge's graph
+  // The moved point `done` of p's twin (the same point in the face across
+  // p's edge; at a vertex p stays), in p's face: the ridge's graph
   // keeps the twins apart, as the linear ridge does (the ridge along a mesh
   // edge may run on both sides of it).
   Ridge_point<Point> in_face_of(const Ridge_point<Point>& done, const Ridge_point<Point>& p) const
@@ -688,8 +697,13 @@ trace_cone_ridge(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
                                                                               mean_edge);
   auto traced = tracer.trace(linear, st);
   // the cone ridge keeps the linear ridge's graph, or it is the linear ridge
+  // (compared with the linear ridge as it is reported: a point rounded onto
+  // a border edge that the comparison counts there makes the linear ridge
+  // reported, never a wrong graph)
   if(ridge_graph_with_border(tm, vpm, vim, fim, traced) != ridge_graph_with_border(tm, vpm, vim, fim, linear))
   {
+    st = Cone_ridge_statistics();
+    st.tolerance = tolerance;
     st.kept_linear_ridge = true;
     return linear;
   }

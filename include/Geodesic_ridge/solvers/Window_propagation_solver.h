@@ -483,8 +483,9 @@ private:
 /// shortest path lengths on the mesh, up to floating-point rounding (within
 /// 1e-9 relative of it on the test meshes). Its memory holds the wavefront
 /// only, not a tree of all windows, and it is much faster on large meshes.
-/// It offers no cones: the cone field (`field(Field::cone)`) needs
-/// `Exact_solver`. Sources on a vertex, on an edge or inside a face; border
+/// It offers no cones: the cone field (`field(Field::cone)`) and the cone
+/// ridge (`cone_ridge`, the default ridge with `Exact_solver`) need
+/// `Exact_solver`; with this solver the ridge reported is the linear field's. Sources on a vertex, on an edge or inside a face; border
 /// edges are respected (paths bend around border vertices).
 struct Window_propagation_solver : internal::Solver_from_source<Window_propagation_solver>
 {
