@@ -233,6 +233,7 @@ struct Geodesic_ridge_statistics
 template <class TriangleMesh, class Point_3>
 struct Ridge_curve
 {
+  /// polylines of points with their surface locations
   typedef std::vector<std::vector<Ridge_point<Point_3> > > Polylines;
   /// the ridge of the region-wise linear field: the boundaries of its cells
   /// where fronts meet (`regions`, the refined mesh), polylines between
