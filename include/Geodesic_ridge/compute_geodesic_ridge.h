@@ -458,6 +458,43 @@ void fast_marching_from_anchors(const Extended_surface<Point>& E, const std::vec
   fast_marching_distances(E.mesh, E.mesh.points(), get(CGAL::vertex_index, E.mesh), seeds, distance);
 }
 
+// Fast marching on the grown E resumed from the last pass on it: the corners
+// of its first `anchor.size()` copies keep the distances they had (a corner
+// shared by copies, or merged since, the smallest), and the sweep restarts from
+// those that touch a copy grown since, so that it costs what E grew, not all of
+// E. A front that comes back lower by more than `reopen_margin` reopens a kept
+// vertex. The same as a pass from scratch where E did not change, up to the
+// order in which fast marching met the vertices near the old border.
+template <class Point>
+void fast_marching_resumed(const Extended_surface<Point>& E, const std::vector<std::array<double, 3> >& anchor,
+                           double reopen_margin, std::vector<double>& distance)
+{
+  typedef typename Extended_surface<Point>::Mesh Mesh;
+  const std::size_t nv = E.mesh.number_of_vertices(), nc = E.mesh.number_of_faces();
+  distance.assign(nv, std::numeric_limits<double>::infinity());
+  std::vector<char> accepted(nv, 0);
+  auto corners = [&](std::size_t c) {
+    std::array<std::size_t, 3> v;
+    auto h = E.mesh.halfedge(typename Mesh::Face_index(static_cast<typename Mesh::size_type>(c)));
+    for(int k = 0; k < 3; ++k, h = E.mesh.next(h)) v[k] = E.mesh.source(h);
+    return v;
+  };
+  for(std::size_t c = 0; c < anchor.size(); ++c)
+  {
+    const auto v = corners(c);
+    for(int k = 0; k < 3; ++k)
+    {
+      distance[v[k]] = (std::min)(distance[v[k]], anchor[c][k]);
+      accepted[v[k]] = 1;
+    }
+  }
+  std::vector<std::size_t> trial;
+  for(std::size_t c = anchor.size(); c < nc; ++c)
+    for(std::size_t v : corners(c))
+      if(accepted[v]) { accepted[v] = 0; trial.push_back(v); }
+  fast_marching_sweep(E.mesh, E.mesh.points(), get(CGAL::vertex_index, E.mesh), trial, distance, accepted, reopen_margin);
+}
+
 // What drives the growth of E (the named parameters of the same names).
 struct Growth_schedule
 {
@@ -514,7 +551,8 @@ public:
       E_(E), face_copies_(face_copies), vertex_distances_(vertex_distances), st_(st), timings_(timings),
       cones_(cones), cone_samples_(cone_samples), cones_near_kinks_only_(cones_near_kinks_only),
       whole_faces_(whole_faces),
-      across_(faces_across(tm, fim)), fast_marching_slack_(0.02 * mean_edge), exact_slack_(1e-9 * mean_edge)
+      across_(faces_across(tm, fim)), fast_marching_slack_(0.02 * mean_edge), exact_slack_(1e-9 * mean_edge),
+      reopen_margin_(1e-9 * mean_edge)
   {}
 
   void run()
@@ -523,7 +561,8 @@ public:
     bool grown = true;
     for(;;)
     {
-      if(grown) timings_.time("extended_surface", [&] { builder_.materialize(E_, src_); });
+      // every E is checked in debug builds, the last one always (below)
+      if(grown) timings_.time("extended_surface", [&] { builder_.materialize(E_, src_, false); });
       run_pass();
       grown = grows(st_.solves) && grow_band();
       if(grown)
@@ -535,6 +574,7 @@ public:
       if(pass_ == Pass::solve || builder_.number_of_copies() == anchor_.size()) break;
       pass_ = Pass::solve;
     }
+    timings_.time("extended_surface", [&] { Builder::check_valid(E_); });
     // the last solve expected E to grow, and it could not (a leaf's winding
     // bound): read the cones on E as it is, with one more solve
     if(cones_ && !cones_read_) read_cones_on_final_surface();
@@ -569,6 +609,11 @@ private:
   void compute_distances()
   {
     if(pass_ == Pass::solve && cones_) solve_reading_cones();
+    else if(pass_ == Pass::solve && solver_is_fast_marching && !anchor_.empty())
+    {
+      fast_marching_resumed(E_, anchor_, reopen_margin_, distance_);
+      ++st_.solves;
+    }
     else if(pass_ == Pass::solve) { solve_on(E_, solver_, distance_); ++st_.solves; }
     else if(pass_ == Pass::predicted) { solve_on(E_, Fast_marching_solver(), distance_); ++st_.predicted_passes; }
     else { fast_marching_from_anchors(E_, anchor_, distance_); ++st_.predicted_passes; }
@@ -662,9 +707,10 @@ private:
       for(int step = 0; step < band && builder_.statistics().rings < schedule_.maximum_rings; ++step)
       {
         const std::size_t before = builder_.number_of_copies();
-        builder_.grow_ring(&grow_from_);
+        builder_.grow_ring(&grow_from_, step == 0 ? 0 : grow_from_first_);
         grow_from_.assign(builder_.number_of_copies(), 0);
         for(std::size_t c = before; c < builder_.number_of_copies(); ++c) grow_from_[c] = 1;
+        grow_from_first_ = before; // the next ring grows from this one's copies only
       }
       return builder_.number_of_copies() > before_band;
     });
@@ -688,6 +734,8 @@ private:
   // a copy that wins on the border by less than this is no winner: noise
   // between neighbouring fronts (fast marching), round-off (the exact solver)
   const double fast_marching_slack_, exact_slack_;
+  // a resumed fast-marching pass reopens a kept vertex only if a front comes this much lower
+  const double reopen_margin_;
   Pass pass_ = Pass::solve;
   std::vector<std::array<double, 3> > anchor_; // per copy, at the last solve: its corner distances
   bool cones_read_ = false; // at the last solve, for the copies of E now
@@ -697,6 +745,7 @@ private:
   std::vector<char> grow_from_;
   std::size_t winning_ = 0;
   bool analysed_ = false;
+  std::size_t grow_from_first_ = 0; // within a band: the first copy of the last ring
 };
 
 // The named parameters of the pipeline beyond those of stage 1, checked.

@@ -135,12 +135,13 @@ public:
   }
 
   /// Grows one ring: a copy across every boundary edge of E (one at a time),
-  /// or only across the boundary edges of the copies `c` with `from[c]` set.
-  void grow_ring(const std::vector<char>* from = nullptr)
+  /// or only across the boundary edges of the copies `c` with `from[c]` set
+  /// (none of those before `first`).
+  void grow_ring(const std::vector<char>* from = nullptr, std::size_t first = 0)
   {
     const int r = ++stats_.rings;
     std::vector<std::pair<std::uint32_t, int> > boundary;
-    for(std::uint32_t c = 0; c < copies_.size(); ++c)
+    for(std::uint32_t c = static_cast<std::uint32_t>(first); c < copies_.size(); ++c)
       if(from == nullptr || (c < from->size() && (*from)[c]))
         for(int k = 0; k < 3; ++k)
           if(copies_[c].nb[k] == none && !on_border(copies_[c].face, k)) boundary.emplace_back(c, k);
@@ -152,9 +153,10 @@ public:
 
   /// Writes E as a `Surface_mesh`: its vertices (one per merged vertex copy),
   /// its glued halfedges, its faces (one per copy) and its border, then the
-  /// source in it.
+  /// source in it. With `validate`, checks that E is a valid polygon mesh
+  /// (else only in debug builds: the growth checks the E it ends with).
   template <class Point>
-  void materialize(Extended_surface<Point>& E, const Geodesic_source<TriangleMesh>& src)
+  void materialize(Extended_surface<Point>& E, const Geodesic_source<TriangleMesh>& src, bool validate = true)
   {
     typedef typename Extended_surface<Point>::Mesh Mesh;
     E.mesh.clear();
@@ -167,12 +169,22 @@ public:
     const std::vector<std::array<typename Mesh::Halfedge_index, 3> > he = add_edges(E.mesh);
     add_faces(E, evertex, he);
     link_border(E.mesh, evertex, he);
-    if(!CGAL::is_valid_polygon_mesh(E.mesh))
-      throw Algorithm_error("the extended surface is not a valid polygon mesh");
+#ifdef NDEBUG
+    if(validate)
+#endif
+      check_valid(E);
     place_source(E, src, evertex);
     stats_.number_of_faces = E.mesh.number_of_faces();
     stats_.number_of_vertices = E.mesh.number_of_vertices();
     E.statistics = stats_;
+  }
+
+  /// Throws `Algorithm_error` unless E is a valid polygon mesh.
+  template <class Point>
+  static void check_valid(const Extended_surface<Point>& E)
+  {
+    if(!CGAL::is_valid_polygon_mesh(E.mesh))
+      throw Algorithm_error("the extended surface is not a valid polygon mesh");
   }
 
   const Extended_surface_statistics& statistics() const { return stats_; }

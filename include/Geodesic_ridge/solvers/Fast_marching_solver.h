@@ -68,18 +68,19 @@ inline double fast_marching_update(const Fast_marching_kernel::Point_3& a, doubl
   return (std::min)(via_edges, ta + g * (C - A));
 }
 
-/// Fast-marching distances from `seeds` (vertex index, initial distance) over
-/// the triangle mesh `tm` with points `vpm`, written to `distance` by vertex
-/// index (infinity where unreachable).
+/// The sweep of fast marching over the triangle mesh `tm` with points `vpm`:
+/// `distance` (by vertex index) holds the known distances, `accepted` the
+/// vertices whose distance is final, and the vertices of `trial` (with finite
+/// distances, not accepted) start the sweep. An accepted vertex reached by a
+/// front lower by more than `reopen_margin` is reopened (infinity: never, as
+/// in fast marching from scratch).
 template <class TriangleMesh, class VertexPointMap, class VertexIndexMap>
-void fast_marching_distances(const TriangleMesh& tm, const VertexPointMap& vpm, const VertexIndexMap& vim,
-                             const std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor,
-                                                         double> >& seeds,
-                             std::vector<double>& distance)
+void fast_marching_sweep(const TriangleMesh& tm, const VertexPointMap& vpm, const VertexIndexMap& vim,
+                         const std::vector<std::size_t>& trial_vertices, std::vector<double>& distance,
+                         std::vector<char>& accepted, double reopen_margin)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
-  const double inf = std::numeric_limits<double>::infinity();
   const std::size_t nv = num_vertices(tm);
   std::vector<Fast_marching_kernel::Point_3> p(nv);
   std::vector<vertex_descriptor> vertex_of(nv);
@@ -89,17 +90,21 @@ void fast_marching_distances(const TriangleMesh& tm, const VertexPointMap& vpm, 
     p[get(vim, v)] = Fast_marching_kernel::Point_3(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
     vertex_of[get(vim, v)] = v;
   }
-  distance.assign(nv, inf);
-  std::vector<char> accepted(nv, 0);
+  const bool reopens = reopen_margin < std::numeric_limits<double>::infinity();
   typedef std::pair<double, std::size_t> Entry;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > trial;
-  for(const auto& s : seeds)
-  {
-    const std::size_t i = get(vim, s.first);
-    if(s.second < distance[i]) { distance[i] = s.second; trial.push(Entry(s.second, i)); }
-  }
+  std::vector<Entry> initial;
+  initial.reserve(trial_vertices.size());
+  for(std::size_t i : trial_vertices) initial.emplace_back(distance[i], i);
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > trial(std::greater<Entry>(), std::move(initial));
   auto relax = [&](std::size_t w, double value) {
-    if(!accepted[w] && value < distance[w]) { distance[w] = value; trial.push(Entry(value, w)); }
+    if(!(value < distance[w])) return;
+    if(accepted[w])
+    {
+      if(!(value < distance[w] - reopen_margin)) return;
+      accepted[w] = 0;
+    }
+    distance[w] = value;
+    trial.push(Entry(value, w));
   };
   while(!trial.empty())
   {
@@ -116,9 +121,40 @@ void fast_marching_distances(const TriangleMesh& tm, const VertexPointMap& vpm, 
       // the face (a, v, b): a front known at v and one other corner updates the third
       const std::size_t b = get(vim, target(next(h, tm), tm));
       if(accepted[b] && !accepted[a]) relax(a, fast_marching_update(p[v], distance[v], p[b], distance[b], p[a]));
-      if(accepted[a] && !accepted[b]) relax(b, fast_marching_update(p[v], distance[v], p[a], distance[a], p[b]));
+      else if(accepted[a] && !accepted[b]) relax(b, fast_marching_update(p[v], distance[v], p[a], distance[a], p[b]));
+      else if(reopens && accepted[a] && accepted[b])
+      {
+        // all three accepted: a front that comes across (v, b) after both
+        // (causal: not below them) may lower a, and likewise b
+        const double ua = fast_marching_update(p[v], distance[v], p[b], distance[b], p[a]);
+        if(ua >= (std::max)(distance[v], distance[b])) relax(a, ua);
+        const double ub = fast_marching_update(p[v], distance[v], p[a], distance[a], p[b]);
+        if(ub >= (std::max)(distance[v], distance[a])) relax(b, ub);
+      }
     }
   }
+}
+
+/// Fast-marching distances from `seeds` (vertex index, initial distance) over
+/// the triangle mesh `tm` with points `vpm`, written to `distance` by vertex
+/// index (infinity where unreachable).
+template <class TriangleMesh, class VertexPointMap, class VertexIndexMap>
+void fast_marching_distances(const TriangleMesh& tm, const VertexPointMap& vpm, const VertexIndexMap& vim,
+                             const std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor,
+                                                         double> >& seeds,
+                             std::vector<double>& distance)
+{
+  const std::size_t nv = num_vertices(tm);
+  distance.assign(nv, std::numeric_limits<double>::infinity());
+  std::vector<char> accepted(nv, 0);
+  std::vector<std::size_t> trial;
+  trial.reserve(seeds.size());
+  for(const auto& s : seeds)
+  {
+    const std::size_t i = get(vim, s.first);
+    if(s.second < distance[i]) { distance[i] = s.second; trial.push_back(i); }
+  }
+  fast_marching_sweep(tm, vpm, vim, trial, distance, accepted, std::numeric_limits<double>::infinity());
 }
 
 } // namespace internal
