@@ -522,7 +522,7 @@ struct Growth_schedule
 //    bend around saddle vertices come out late), far more than any slack that
 //    would not grow E everywhere (teddy_3k v0: 36 rings short).
 // With fast marching as the solver, its passes are the solves.
-template <class TriangleMesh, class FaceIndexMap, class Builder, class Solver, class Point>
+template <class TriangleMesh, class Builder, class Solver, class Point>
 class Extension_growth
 {
   enum class Pass { predicted, solve, anchored };
@@ -541,7 +541,7 @@ public:
   // the last solve (at `cone_samples`); with `cones_near_kinks_only` > 0 only
   // those of copies near kinks of that many degrees (`copies_near_kinks`),
   // and with `whole_faces` those of every copy of a face that has one.
-  Extension_growth(const TriangleMesh& tm, FaceIndexMap fim, const Geodesic_source<TriangleMesh>& src,
+  Extension_growth(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src,
                    Builder& builder, const Solver& solver, const Growth_schedule& schedule,
                    double mean_edge, Extended_surface<Point>& E, std::vector<Face_copies>& face_copies,
                    std::vector<double>& vertex_distances, Geodesic_ridge_statistics& st, Timings& timings,
@@ -551,7 +551,7 @@ public:
       E_(E), face_copies_(face_copies), vertex_distances_(vertex_distances), st_(st), timings_(timings),
       cones_(cones), cone_samples_(cone_samples), cones_near_kinks_only_(cones_near_kinks_only),
       whole_faces_(whole_faces),
-      across_(faces_across(tm, fim)), fast_marching_slack_(0.02 * mean_edge), exact_slack_(1e-9 * mean_edge),
+      across_(builder.faces_across_edges()), fast_marching_slack_(0.02 * mean_edge), exact_slack_(1e-9 * mean_edge),
       reopen_margin_(1e-9 * mean_edge)
   {}
 
@@ -730,7 +730,7 @@ private:
   const std::vector<std::array<double, 3> >& cone_samples_;
   const double cones_near_kinks_only_;
   const bool whole_faces_;
-  const Faces_across across_;
+  const Faces_across& across_; // the builder's
   // a copy that wins on the border by less than this is no winner: noise
   // between neighbouring fronts (fast marching), round-off (the exact solver)
   const double fast_marching_slack_, exact_slack_;
@@ -891,8 +891,8 @@ private:
     const bool cone_field = options_.field == Field::cone;
     const Growth_schedule schedule{options_.extension_step, options_.maximum_rings, options_.maximum_solves,
                                    options_.predicted};
-    Extension_growth<TriangleMesh, FaceIndexMap, Builder, Solver, Point> growth(
-        tm_, maps_.fim, src_, builder, solver_, schedule, mean_edge_, E_, face_copies_, result_.vertex_distances, st_,
+    Extension_growth<TriangleMesh, Builder, Solver, Point> growth(
+        tm_, src_, builder, solver_, schedule, mean_edge_, E_, face_copies_, result_.vertex_distances, st_,
         timings_, options_.cone_ridge || split_at_kinks() ? &copy_cones_ : nullptr, cone_samples(),
         cone_field ? 0 : kink_filter_share * options_.kink_angle, options_.cone_ridge);
     growth.run();

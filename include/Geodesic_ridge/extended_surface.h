@@ -160,20 +160,24 @@ public:
   {
     typedef typename Extended_surface<Point>::Mesh Mesh;
     E.mesh.clear();
-    // E is rebuilt at every pass: its arrays are sized once, not grown by doubling
-    E.mesh.reserve(static_cast<typename Mesh::size_type>(vertex_copies_.number_of_sets()),
-                   static_cast<typename Mesh::size_type>(number_of_edges()),
-                   static_cast<typename Mesh::size_type>(copies_.size()));
-    const std::vector<std::uint32_t> evertex = add_vertices(E);
+    const std::vector<std::array<std::uint32_t, 3> > corner_vertex = number_vertices(E);
+    // E is rebuilt at every pass: its arrays are sized once and filled by
+    // index (vertex v, edge e with halfedges 2e and 2e + 1, face c = copy c)
+    E.mesh.resize(static_cast<typename Mesh::size_type>(E.original_vertex.size()),
+                  static_cast<typename Mesh::size_type>(number_of_edges()),
+                  static_cast<typename Mesh::size_type>(copies_.size()));
+    for(std::size_t v = 0; v < E.original_vertex.size(); ++v)
+      E.mesh.point(typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(v))) =
+          get(maps_.vpm, vertex_of_[E.original_vertex[v]]);
     // halfedge (c, k) runs from corner k to corner k+1 of copy c
     const std::vector<std::array<typename Mesh::Halfedge_index, 3> > he = add_edges(E.mesh);
-    add_faces(E, evertex, he);
-    link_border(E.mesh, evertex, he);
+    add_faces(E, corner_vertex, he);
+    link_border(E.mesh, corner_vertex, he);
 #ifdef NDEBUG
     if(validate)
 #endif
       check_valid(E);
-    place_source(E, src, evertex);
+    place_source(E, src, corner_vertex);
     stats_.number_of_faces = E.mesh.number_of_faces();
     stats_.number_of_vertices = E.mesh.number_of_vertices();
     E.statistics = stats_;
@@ -188,6 +192,8 @@ public:
   }
 
   const Extended_surface_statistics& statistics() const { return stats_; }
+  /// per face of M and edge k: the face across it and that edge's index there
+  const Faces_across& faces_across_edges() const { return across_; }
   std::size_t number_of_copies() const { return copies_.size(); }
 
 private:
@@ -280,28 +286,33 @@ private:
 
   // the vertex of E at corner k of copy c
   template <class Mesh>
-  typename Mesh::Vertex_index vertex_at(const std::vector<std::uint32_t>& evertex, std::uint32_t c, int k)
+  static typename Mesh::Vertex_index vertex_at(const std::vector<std::array<std::uint32_t, 3> >& corner_vertex,
+                                               std::uint32_t c, int k)
   {
-    return typename Mesh::Vertex_index(evertex[find(copies_[c].corner[k % 3])]);
+    return typename Mesh::Vertex_index(corner_vertex[c][k % 3]);
   }
 
-  // one vertex of E per merged vertex copy, in order of first use; returns
-  // the vertex of E of every root vertex copy
+  // one vertex of E per merged vertex copy, numbered in order of first use
+  // (with its original in `E.original_vertex`); returns the vertex of E at
+  // every corner of every copy
   template <class Point>
-  std::vector<std::uint32_t> add_vertices(Extended_surface<Point>& E)
+  std::vector<std::array<std::uint32_t, 3> > number_vertices(Extended_surface<Point>& E)
   {
     std::vector<std::uint32_t> evertex(vertex_copies_.size(), none);
+    std::vector<std::array<std::uint32_t, 3> > corner_vertex(copies_.size());
     E.original_vertex.clear();
     for(std::uint32_t c = 0; c < copies_.size(); ++c)
       for(int k = 0; k < 3; ++k)
       {
         const std::uint32_t root = find(copies_[c].corner[k]);
-        if(evertex[root] != none) continue;
-        evertex[root] = static_cast<std::uint32_t>(E.mesh.number_of_vertices());
-        E.mesh.add_vertex(get(maps_.vpm, vertex_of_[fans_[root].vertex]));
-        E.original_vertex.push_back(fans_[root].vertex);
+        if(evertex[root] == none)
+        {
+          evertex[root] = static_cast<std::uint32_t>(E.original_vertex.size());
+          E.original_vertex.push_back(fans_[root].vertex);
+        }
+        corner_vertex[c][k] = evertex[root];
       }
-    return evertex;
+    return corner_vertex;
   }
 
   // the edges of E: one per glued pair of copy edges or border copy edge
@@ -313,17 +324,19 @@ private:
     return n;
   }
 
-  // one edge of E per glued pair of copy edges or border copy edge
+  // one edge of E per glued pair of copy edges or border copy edge (E's
+  // arrays are sized: edge e is the e-th met)
   template <class Mesh>
   std::vector<std::array<typename Mesh::Halfedge_index, 3> > add_edges(Mesh& m) const
   {
     std::vector<std::array<typename Mesh::Halfedge_index, 3> > he(copies_.size());
+    typename Mesh::size_type e = 0;
     for(std::uint32_t c = 0; c < copies_.size(); ++c)
       for(int k = 0; k < 3; ++k)
       {
         const Copy& cc = copies_[c];
         if(cc.nb[k] != none && cc.nb[k] < c) continue; // created from the other side
-        const auto h = m.add_edge();
+        const auto h = m.halfedge(typename Mesh::Edge_index(e++));
         he[c][k] = h;
         if(cc.nb[k] != none) he[cc.nb[k]][cc.nb_edge[k]] = m.opposite(h);
       }
@@ -331,7 +344,8 @@ private:
   }
 
   template <class Point, class Halfedges>
-  void add_faces(Extended_surface<Point>& E, const std::vector<std::uint32_t>& evertex, const Halfedges& he)
+  void add_faces(Extended_surface<Point>& E, const std::vector<std::array<std::uint32_t, 3> >& evertex,
+                 const Halfedges& he)
   {
     typedef typename Extended_surface<Point>::Mesh Mesh;
     Mesh& m = E.mesh;
@@ -339,7 +353,7 @@ private:
     E.ring.resize(copies_.size());
     for(std::uint32_t c = 0; c < copies_.size(); ++c)
     {
-      const typename Mesh::Face_index f = m.add_face();
+      const typename Mesh::Face_index f(static_cast<typename Mesh::size_type>(c));
       E.original_face[c] = copies_[c].face;
       E.ring[c] = copies_[c].ring;
       m.set_halfedge(f, he[c][0]);
@@ -357,7 +371,7 @@ private:
   // border halfedges: opposite of (c, k) unglued, from corner k+1 to corner k;
   // its next leaves corner k at the other end of that vertex copy's fan.
   template <class Mesh, class Halfedges>
-  void link_border(Mesh& m, const std::vector<std::uint32_t>& evertex, const Halfedges& he)
+  void link_border(Mesh& m, const std::vector<std::array<std::uint32_t, 3> >& evertex, const Halfedges& he)
   {
     for(std::uint32_t c = 0; c < copies_.size(); ++c)
       for(int k = 0; k < 3; ++k)
@@ -376,7 +390,7 @@ private:
 
   template <class Point>
   void place_source(Extended_surface<Point>& E, const Geodesic_source<TriangleMesh>& src,
-                    const std::vector<std::uint32_t>& evertex)
+                    const std::vector<std::array<std::uint32_t, 3> >& evertex)
   {
     typedef typename Extended_surface<Point>::Mesh Mesh;
     E.source_is_vertex = (src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX);
