@@ -20,12 +20,16 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <limits>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -671,13 +675,33 @@ TEST_CASE("plain OFF files are read by the fast path exactly as CGAL's reader re
   namespace mio = Geodesic_ridge::internal::mesh_io;
   const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
   // plain files, in the forms the fast path takes
-  const std::vector<std::string> plain = {
+  std::vector<std::string> plain = {
     to_off(tetrahedron()),
     "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces,
     "OFF 4 4 6\n0 0 0  \n\n1 0 0\n\t0 1 0\n0 0 1" + std::string("\n") + faces + "trailing text, never read\n",
     "OFF\r\n4 4 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n0 0 1\r\n3 0 2 1\r\n3 0 1 3\r\n3 0 3 2\r\n3 1 2 3",
     "OFF\n5 3 0\n+1.5e-3 -.25 5.\n1E2 0.1 -0\n0.3 1e+1 7\n2.5e-320 1e-400 -4.9e-324\n.5 5 0005\n4 0 1 2 3\n3 0 2 4\n3 1 3 4\n",
   };
+  { // many numbers in the forms writers use (the fast path parses with std::from_chars)
+    std::mt19937 random(20261205);
+    std::cout << "[input] plain OFF numbers: std::mt19937 seed 20261205" << std::endl;
+    std::uniform_real_distribution<double> mantissa(-1, 1);
+    std::uniform_int_distribution<int> exponent(-30, 30), form(0, 4);
+    const int n = 3000;
+    std::string file = "OFF\n" + std::to_string(n) + " " + std::to_string(n - 2) + " 0\n";
+    char buffer[64];
+    for(int i = 0; i < 3 * n; ++i)
+    {
+      const double x = std::ldexp(mantissa(random), exponent(random));
+      const char* const formats[] = {"%.17g", "%.6f", "%e", "%.9g", "%+.3E"};
+      std::snprintf(buffer, sizeof buffer, formats[form(random)], x);
+      file += buffer;
+      file += (i % 3 == 2) ? "\n" : " ";
+    }
+    for(int i = 0; i + 2 < n; ++i)
+      file += "3 " + std::to_string(i) + " " + std::to_string(i + 1) + " " + std::to_string(i + 2) + "\n";
+    plain.push_back(file);
+  }
   // anything else: CGAL's reader reads it (or explains why not)
   const std::vector<std::string> other = {
     "# a comment\nOFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces,

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cerrno>
 #include <cstdlib>
@@ -35,6 +36,7 @@
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace Geodesic_ridge {
@@ -275,6 +277,12 @@ inline bool plain_OFF_number(const Plain_OFF_token& t, double& value)
     while(c != t.second && is_digit(*c)) ++c;
   }
   if(c != t.second) return false;
+  // std::from_chars rounds as strtod does (correctly), several times faster;
+  // it takes no leading '+', and anything it refuses (an overflow, an
+  // underflow) goes to strtod, as before
+  const char* first = *t.first == '+' ? t.first + 1 : t.first;
+  const auto parsed = std::from_chars(first, t.second, value);
+  if(parsed.ec == std::errc() && parsed.ptr == t.second) return true;
   char* stop = nullptr;
   value = std::strtod(t.first, &stop);
   return stop == t.second && std::isfinite(value); // CGAL's reader rejects an overflow
