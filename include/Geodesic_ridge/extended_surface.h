@@ -173,10 +173,10 @@ public:
     const std::vector<std::array<typename Mesh::Halfedge_index, 3> > he = add_edges(E.mesh);
     add_faces(E, corner_vertex, he);
     link_border(E.mesh, corner_vertex, he);
-#ifdef NDEBUG
-    if(validate)
+#ifndef NDEBUG
+    validate = true; // every E is checked in debug builds
 #endif
-      check_valid(E);
+    if(validate) check_valid(E);
     place_source(E, src, corner_vertex);
     stats_.number_of_faces = E.mesh.number_of_faces();
     stats_.number_of_vertices = E.mesh.number_of_vertices();
