@@ -704,13 +704,14 @@ private:
     return timings_.time("extended_surface", [&] {
       const std::size_t before_band = builder_.number_of_copies();
       const int band = std::max(schedule_.extension_step, builder_.statistics().rings / 2);
+      std::size_t first = 0; // the next ring grows from the last one's copies only
       for(int step = 0; step < band && builder_.statistics().rings < schedule_.maximum_rings; ++step)
       {
         const std::size_t before = builder_.number_of_copies();
-        builder_.grow_ring(&grow_from_, step == 0 ? 0 : grow_from_first_);
+        builder_.grow_ring(&grow_from_, first);
         grow_from_.assign(builder_.number_of_copies(), 0);
         for(std::size_t c = before; c < builder_.number_of_copies(); ++c) grow_from_[c] = 1;
-        grow_from_first_ = before; // the next ring grows from this one's copies only
+        first = before;
       }
       return builder_.number_of_copies() > before_band;
     });
@@ -745,7 +746,6 @@ private:
   std::vector<char> grow_from_;
   std::size_t winning_ = 0;
   bool analysed_ = false;
-  std::size_t grow_from_first_ = 0; // within a band: the first copy of the last ring
 };
 
 // The named parameters of the pipeline beyond those of stage 1, checked.
