@@ -40,7 +40,7 @@ struct Pipeline_options
   int initial_rings = Geodesic_ridge::default_initial_rings, extension_step = Geodesic_ridge::default_extension_step,
       maximum_rings = Geodesic_ridge::default_maximum_rings,
       maximum_solves = Geodesic_ridge::default_maximum_solves;
-  bool tree_from_solver = false, predicted = true, corner_fallback = false, cone_ridge = true;
+  bool tree_from_solver = false, predicted = true, corner_fallback = true, cone_ridge = true;
   double spur_angle = Geodesic_ridge::default_minimum_spur_angle,
          leaf_curvature = Geodesic_ridge::default_leaf_curvature, kink_angle = Geodesic_ridge::default_kink_angle,
          branch_curvature = Geodesic_ridge::default_branch_curvature;
@@ -77,11 +77,11 @@ struct Pipeline_options
   }
 
   /// with the exact solver: the parameters and whether the ridge is the cone
-  /// ridge (not with the corner fallback, a linear ridge's option)
+  /// ridge
   auto exact_parameters(double tolerance) const
   {
     namespace p = Geodesic_ridge::parameters;
-    return p::cone_ridge(cone_ridge && !corner_fallback, p::solver(Geodesic_ridge::Exact_solver(), parameters(tolerance)));
+    return p::cone_ridge(cone_ridge, p::solver(Geodesic_ridge::Exact_solver(), parameters(tolerance)));
   }
 };
 

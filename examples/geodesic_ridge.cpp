@@ -9,10 +9,10 @@
 //                  [--refined OUT.ply [--ply-ascii]]
 //                  [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]
 //                  [--query IN.txt [--query-barycentric] --query-out OUT.txt] [--field linear|cone]
-//                  [--linear-ridge] [--corner-fallback]
+//                  [--linear-ridge] [--no-corner-fallback]
 //                  [--stats OUT.json] [--png OUT.png]
 //   geodesic_ridge MESH --sources FILE --out-dir DIR [--repair] [--tolerance T] [--solver NAME]
-//                  [--linear-ridge] [--corner-fallback]
+//                  [--linear-ridge] [--no-corner-fallback]
 //
 // With the exact solver the ridge written and drawn is the cone ridge (where
 // the exact solver's cones meet); --linear-ridge gives the linear field's.
@@ -97,10 +97,10 @@ const char* synopsis =
     "                      [--refined OUT.ply [--ply-ascii]]\n"
     "                      [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]\n"
     "                      [--query IN.txt [--query-barycentric] --query-out OUT.txt]\n"
-    "                      [--field linear|cone] [--linear-ridge] [--corner-fallback] [--stats OUT.json]\n"
+    "                      [--field linear|cone] [--linear-ridge] [--no-corner-fallback] [--stats OUT.json]\n"
     "                      [--png OUT.png]\n"
     "       geodesic_ridge MESH --sources FILE --out-dir DIR [--repair] [--tolerance T] [--solver NAME]\n"
-    "                      [--linear-ridge] [--corner-fallback]\n"
+    "                      [--linear-ridge] [--no-corner-fallback]\n"
     "  MESH: a manifold surface, closed or with borders (.off, .obj, .ply; PLY triangle strips too).\n"
     "  Polygons are triangulated (CGAL's triangulate_face rule; a note on stderr says how many, and how\n"
     "  many were not planar); dirty meshes are refused, naming what --repair would fix.\n"
@@ -166,10 +166,16 @@ struct Options
   std::string query, query_out;
   bool query_barycentric = false;
   Geodesic_ridge::Field field = Geodesic_ridge::Field::linear;
-  bool corner_fallback = false;
+  bool corner_fallback = true;
   bool linear_ridge = false;
   std::string sources, out_dir;           // many sources: --sources FILE --out-dir DIR
 };
+
+// whether the corner fallback applies: the exact solver's kink split, linear field
+bool corner_fallback_used(const Options& o)
+{
+  return o.corner_fallback && o.solver == "exact" && o.field == Geodesic_ridge::Field::linear;
+}
 
 // Boost's multitoken() takes any number of values; --source-point takes 4, the
 // iso-line options 2, so that the mesh may follow them.
@@ -231,10 +237,10 @@ po::options_description describe()
     ("linear-ridge", po::bool_switch(),
      "exact solver: report the ridge of the region-wise linear field (the refined mesh's) instead of the cone "
      "ridge, where the exact solver's cones meet (parameters::cone_ridge(false))")
-    ("corner-fallback", po::bool_switch(),
-     "exact solver, linear ridge (implies --linear-ridge): a face copy whose corner no cone sample reaches "
-     "exactly takes that corner's front from a sample next to it (parameters::corner_fallback: more branches "
-     "found at small tolerances, some placed less well)")
+    ("no-corner-fallback", po::bool_switch(),
+     "exact solver: a face copy whose corner no cone sample reaches exactly stays whole instead of taking that "
+     "corner's front from a sample next to it (parameters::corner_fallback(false): fewer branches found at small "
+     "tolerances)")
     ("sources", text("FILE"), "many sources instead of one, one per line: 'V' (a vertex) or 'FACE X Y Z' (a point of "
                               "the face); '#' starts a comment. With --out-dir; in parallel when built with TBB")
     ("out-dir", text("DIR"), "with --sources: for the k-th source (0-based) DIR/ridge_k.polylines.txt and "
@@ -351,8 +357,8 @@ Options parse(int argc, char** argv)
   o.repair = vm["repair"].as<bool>();
   o.isolines_from_vertices = vm["isolines-from-vertices"].as<bool>();
   o.query_barycentric = vm["query-barycentric"].as<bool>();
-  o.corner_fallback = vm["corner-fallback"].as<bool>();
-  o.linear_ridge = vm["linear-ridge"].as<bool>() || o.corner_fallback;
+  o.corner_fallback = !vm["no-corner-fallback"].as<bool>();
+  o.linear_ridge = vm["linear-ridge"].as<bool>();
   o.sources = text(vm, "sources"), o.out_dir = text(vm, "out-dir");
   if(o.sources.empty() != o.out_dir.empty()) throw Usage_error("--sources and --out-dir go together");
   if(!o.sources.empty())
@@ -371,11 +377,11 @@ Options parse(int argc, char** argv)
   if(o.ply_ascii && o.refined.empty()) throw Usage_error("--ply-ascii needs --refined");
   if(o.field == Geodesic_ridge::Field::cone && o.solver != "exact")
     throw Geodesic_ridge::Invalid_parameter_error("the cone field needs the exact solver");
-  if(o.corner_fallback && o.solver != "exact")
-    throw Geodesic_ridge::Invalid_parameter_error("--corner-fallback needs the exact solver (its cones)");
-  if(o.corner_fallback && o.field == Geodesic_ridge::Field::cone)
-    throw Geodesic_ridge::Invalid_parameter_error("--corner-fallback is for the linear field (the cone field reads "
-                                                  "every copy's cones)");
+  if(!o.corner_fallback && o.solver != "exact")
+    throw Geodesic_ridge::Invalid_parameter_error("--no-corner-fallback is for the exact solver (its cones)");
+  if(!o.corner_fallback && o.field == Geodesic_ridge::Field::cone)
+    throw Geodesic_ridge::Invalid_parameter_error("--no-corner-fallback is for the linear field (the cone field's "
+                                                  "samples are next to the corners already)");
   if(o.linear_ridge && o.solver != "exact")
     throw Geodesic_ridge::Invalid_parameter_error("--linear-ridge is for the exact solver (the others have no cone "
                                                   "ridge)");
@@ -592,7 +598,7 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
                                       : Json{{"face", file_source.face}, {"barycentric", file_source.coordinates}};
   Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source}, {"tolerance", o.tolerance}, {"solver", o.solver},
                             {"field", o.field == Geodesic_ridge::Field::cone ? "cone" : "linear"},
-                            {"linear_ridge", o.linear_ridge}, {"corner_fallback", o.corner_fallback},
+                            {"linear_ridge", o.linear_ridge}, {"corner_fallback", corner_fallback_used(o)},
                             {"repair", o.repair}}},
             {"input", {{"file_vertices", map.number_of_file_vertices()},
                        {"file_faces", map.number_of_file_faces()},
@@ -1032,7 +1038,7 @@ void write_batch_stats(const std::string& filename, const Options& o, const Batc
 {
   Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source.text}, {"tolerance", o.tolerance},
                             {"solver", o.solver}, {"linear_ridge", o.linear_ridge},
-                            {"corner_fallback", o.corner_fallback}, {"repair", o.repair}}},
+                            {"corner_fallback", corner_fallback_used(o)}, {"repair", o.repair}}},
             {"ridge", {{"polylines", rc.polylines.size()}, {"cone_polylines", rc.cone_polylines.size()}}},
             {"statistics", rc.statistics}};
   j["timings_seconds"] = timings_of(rc, 0);

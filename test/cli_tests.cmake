@@ -98,10 +98,10 @@ add_test(NAME cli.field.cone
                  "-DEXTRA=--field;cone" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_field_outputs.cmake)
 cli_failure(cone_with_vtp         "the cone field needs the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver vtp --field cone)
 cli_failure(cone_with_fmm         "the cone field needs the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --field cone)
-# the exact solver's corner fallback samples (parameters::corner_fallback)
-add_test(NAME cli.ridge.corner_fallback.bunny_1k
+# without the exact solver's corner fallback samples (parameters::corner_fallback(false))
+add_test(NAME cli.ridge.no_corner_fallback.bunny_1k
          COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/bunny_1k.off "-DSOURCE=--source-vertex;5"
-                 "-DEXTRA=--corner-fallback" -DOUT=${OUTDIR}/corner_fallback -DGENUS=0
+                 "-DEXTRA=--no-corner-fallback" -DOUT=${OUTDIR}/no_corner_fallback -DGENUS=0
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
 # the linear field's ridge instead of the cone ridge
 add_test(NAME cli.ridge.linear_ridge.bunny_1k
@@ -110,8 +110,8 @@ add_test(NAME cli.ridge.linear_ridge.bunny_1k
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
 cli_failure(linear_ridge_fmm      "--linear-ridge is for the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --linear-ridge)
 cli_failure(linear_ridge_cone     "--linear-ridge is not for the cone field" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field cone --linear-ridge)
-cli_failure(corner_fallback_fmm   "--corner-fallback needs the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --corner-fallback)
-cli_failure(corner_fallback_cone  "--corner-fallback is for the linear field" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field cone --corner-fallback)
+cli_failure(no_corner_fallback_fmm  "--no-corner-fallback is for the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --no-corner-fallback)
+cli_failure(no_corner_fallback_cone "--no-corner-fallback is for the linear field" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field cone --no-corner-fallback)
 cli_failure(unknown_field         "unknown field 'planar'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field planar)
 set(Q ${D}/torus_1k.off --source-vertex 0 --query-out ${OUTDIR}/q.txt --query)
 cli_failure(query_bad_face        "line 1: face 5000 is out of range" ${CLI} ${Q} ${B}/queries_bad_face.txt)

@@ -249,22 +249,22 @@ TEST_CASE("ridge accuracy against the exact reference ridge", "[ridge_accuracy]"
 // at such kinks (recall p95, mean edges): armadillo_2k v0 1.78, v792 1.12;
 // bunny_1k v251 1.34 and the random point f434 0.58 (1.11 while the split
 // fronts were still glued to their neighbours by the gradient test). With
-// parameters::corner_fallback (a sample nearer to each corner, where the kink
-// passes between the corner and its first sample, so that no sample's cone
-// gives the corner's front): armadillo_2k v648 3.54 without it.
+// parameters::corner_fallback (default: a sample nearer to each corner, where
+// the kink passes between the corner and its first sample, so that no
+// sample's cone gives the corner's front): armadillo_2k v648 3.54 without it.
 TEST_CASE("kinks inside one sheet: the major ridge at a small tolerance", "[ridge_accuracy]")
 {
   namespace p = Geodesic_ridge::parameters;
-  auto check = [&](const Mesh& m, const auto& source, const std::string& what, bool fallback = false) {
+  auto check = [&](const Mesh& m, const auto& source, const std::string& what) {
     INFO(what);
-    const auto rc = Geodesic_ridge::compute_ridge_curve(m, source, p::tolerance(0.002, p::corner_fallback(fallback)));
+    const auto rc = Geodesic_ridge::compute_ridge_curve(m, source, p::tolerance(0.002));
     check_major_ridge(exact_reference(m, source), rc, "kinks inside one sheet, " + what);
     CHECK(rc.statistics.ridge.split_copies > 0);
   };
   const Mesh armadillo = load("armadillo_2k.off");
   for(const std::size_t v : {0, 792})
     check(armadillo, Mesh::Vertex_index(static_cast<Mesh::size_type>(v)), "armadillo_2k v" + std::to_string(v));
-  check(armadillo, Mesh::Vertex_index(648), "armadillo_2k v648 with the corner fallback", true);
+  check(armadillo, Mesh::Vertex_index(648), "armadillo_2k v648 (the corner fallback)");
   const Mesh bunny = load("bunny_1k.off");
   check(bunny, Mesh::Vertex_index(251), "bunny_1k v251");
   // the second of bench_ridge_accuracy's random points (seed 1 + F)

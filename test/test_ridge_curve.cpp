@@ -648,9 +648,9 @@ TEST_CASE("the optional schedules keep the ridge's guarantees", "[ridge_curve]")
 // The ridge reported (`Ridge_curve::ridge_polylines()`, the output of
 // `compute_geodesic_ridge()`): with the exact solver the cone ridge, traced
 // from the linear field's ridge with its topology; the linear field's with
-// `cone_ridge(false)`, with the linear ridge's corner fallback, and with a
-// solver without cones. Asking for the cone ridge without cones, or with the
-// corner fallback, is an error before any work.
+// `cone_ridge(false)` and with a solver without cones; the corner fallback
+// (default) works with either. Asking for the cone ridge without cones is an
+// error before any work.
 TEST_CASE("the ridge reported: the cone ridge with the exact solver, else the linear field's", "[ridge_curve]")
 {
   namespace p = Geodesic_ridge::parameters;
@@ -685,15 +685,17 @@ TEST_CASE("the ridge reported: the cone ridge with the exact solver, else the li
       CHECK(rc.statistics.ridge.components == 1);
     };
     check_linear(Geodesic_ridge::compute_ridge_curve(m, s, p::cone_ridge(false)), "cone_ridge(false)");
-    check_linear(Geodesic_ridge::compute_ridge_curve(m, s, p::corner_fallback(true)), "corner_fallback(true)");
+    check_linear(Geodesic_ridge::compute_ridge_curve(m, s, p::cone_ridge(false, p::corner_fallback(true))),
+                 "cone_ridge(false), corner_fallback(true)");
+    const Result without_fallback = Geodesic_ridge::compute_ridge_curve(m, s, p::corner_fallback(false));
+    CHECK(without_fallback.statistics.cone_ridge_traced);
+    check_ridge_validity(m, without_fallback, name + " (cone ridge, no corner fallback)");
     check_linear(Geodesic_ridge::compute_ridge_curve(m, s, p::solver(Geodesic_ridge::Fast_marching_solver())),
                  "fast marching");
   }
   const Mesh m = load("torus_1k.off");
   CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(
                       m, vertex_descriptor(0), p::cone_ridge(true, p::solver(Geodesic_ridge::Fast_marching_solver()))),
-                  Geodesic_ridge::Invalid_parameter_error);
-  CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0), p::cone_ridge(true, p::corner_fallback(true))),
                   Geodesic_ridge::Invalid_parameter_error);
   CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(
                       m, vertex_descriptor(0), p::cone_ridge(false, p::field(Geodesic_ridge::Field::cone))),
@@ -804,6 +806,18 @@ TEST_CASE("a copy is split at a kink between its corners' fronts", "[ridge_curve
       const auto [out, split] = run(fronts, {{left, left, left}});
       CHECK(split == 1);
       check_fields(out);
+    }
+    {
+      // a fallback front whose cone lies below the copy's distance at another
+      // corner (3 from the left at (1, 0), 2.06 from (0.5, 2)) is extended
+      // beyond its window there: no ridge, no split (they arrive 104 degrees
+      // apart at the centroid)
+      const Front near_top{0.5, 2};
+      std::array<Front, 3> shadowed = fronts;
+      shadowed[top] = near_top;
+      const auto [out, split] = run(shadowed, {{left, left, left}});
+      CHECK(split == 0);
+      CHECK(out.fields.size() == 1);
     }
   }
   {

@@ -163,14 +163,16 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle)
 /// With the exact solver's kink split (`kink_angle`), a copy alone in its face
 /// whose corner no sample's front reaches exactly (the kink passes between the
 /// corner and its sample) takes that corner's front from one more sample, at
-/// barycentric 0.98 of the corner (`Exact_solver::corner_fallback_samples()`).
-/// More branches of the major ridge are found (on the accuracy benchmark's 168
-/// pairs, recall p95 at tolerance 0.002 within 0.5 mean edge on all of them
-/// instead of 167), but they are placed less precisely (precision p95 within
-/// 0.25 mean edge on 149 pairs instead of 161) and the cones are read at twice
-/// as many samples: off by default (user manual, \ref GeodesicRidgeSecAccuracyRidge).
-/// For the linear ridge only: `corner_fallback(true)` makes `cone_ridge`
-/// default to `false` (the two together are an error).
+/// barycentric 0.98 of the corner (`Exact_solver::corner_fallback_samples()`),
+/// if that front meets the others at a ridge: no corner's front has a cone
+/// below the copy's distance at another corner. Default `true`; ignored
+/// with the cone field (its samples are next to the corners already) and
+/// without cones. On the accuracy benchmark's 168 pairs (user manual,
+/// \ref GeodesicRidgeSecCone) it finds the branches that pass between a corner
+/// and its sample: recall p95 at tolerance 0.002 within 0.5 mean edge on all
+/// of them (167 with `false`; bunny_7k from vertex 697 0.05 instead of 2.8),
+/// precision p95 (where fronts meet at 30 degrees or more) within 0.25 mean
+/// edge on 164 of them (167 with `false`), at 1.04 times the time.
 GEODESIC_RIDGE_NAMED_PARAMETER(bool, corner_fallback)
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// `Field::linear` (default) or `Field::cone`: with `cone`, the ridge curve
@@ -185,8 +187,10 @@ GEODESIC_RIDGE_NAMED_PARAMETER(Field, field)
 /// the ridge of the linear field moved onto the curve where the exact
 /// solver's cones meet, with the cones read only on the faces near kinks
 /// inside one sheet (`Exact_solver::cone_ridge_samples()`; with
-/// `kink_angle(0)` on every copy). Default `true` with a solver that offers
-/// cones (`Exact_solver`) unless `corner_fallback(true)`, and always with
+/// `kink_angle(0)` on every copy; with `corner_fallback`, also at
+/// `Exact_solver::cone_ridge_fallback_samples()`), and where a copy is split
+/// at a kink, on the curve where its fronts' cones meet. Default `true` with a
+/// solver that offers cones (`Exact_solver`), and always with
 /// `field(Field::cone)`; `false` reports the linear field's ridge
 /// (`Ridge_curve::polylines`). The kink split sees the cone ridge's samples
 /// too, so the linear field's ridge of a default run may differ slightly
@@ -775,17 +779,17 @@ Pipeline_options pipeline_options(const NamedParameters& np, const Solver& solve
   o.cone_ridge_tolerance = get_number_in_range<internal_np::cone_ridge_tolerance_t>(
       np, default_cone_ridge_tolerance, std::numeric_limits<double>::min(), 1, false, "cone ridge tolerance", "(0, 1]");
   o.tree_from_solver = choose_parameter(get_parameter(np, internal_np::tree_from_solver_t()), false);
-  o.corner_fallback = choose_parameter(get_parameter(np, internal_np::corner_fallback_t()), false);
-  // the cone ridge: by default with cones, unless the linear ridge's corner fallback is asked for
+  // the cone field's own samples are next to the corners already
+  o.corner_fallback = choose_parameter(get_parameter(np, internal_np::corner_fallback_t()), true) &&
+                      o.field != Field::cone;
+  // the cone ridge: by default with a solver that offers cones
   const bool has_cones = Geodesic_solver_traits<std::decay_t<Solver> >::has_cones;
   o.cone_ridge = choose_parameter(get_parameter(np, internal_np::cone_ridge_t()),
-                                  o.field == Field::cone || (has_cones && !o.corner_fallback));
+                                  o.field == Field::cone || has_cones);
   if(o.field == Field::cone && !o.cone_ridge)
     throw Invalid_parameter_error("cone_ridge(false) with the cone field: the cone field's ridge is the cone ridge");
   if(o.cone_ridge && !has_cones)
     throw Invalid_parameter_error(std::string("the cone ridge needs a solver with cones (the exact solver), not '") + solver.name() + "'");
-  if(o.cone_ridge && o.corner_fallback)
-    throw Invalid_parameter_error("corner_fallback is for the linear ridge (the cone ridge reads its cones near the corners)");
   if(o.initial_rings < 0 || o.maximum_rings < o.initial_rings || o.extension_step < 1)
     throw Invalid_parameter_error("extension rings: need 0 <= initial_rings <= maximum_rings and extension_step >= 1");
   if(o.maximum_solves < 1) throw Invalid_parameter_error("maximum_solves must be at least 1");
@@ -909,6 +913,33 @@ private:
           for(std::size_t i = 0; i < samples; ++i) cones[f].push_back(copy_cones_[samples * c + i]);
   }
 
+  // The cone ridge's cones of each face with a copy split at a kink: per front
+  // of a split copy one copy whose every sample gives the front's cone,
+  // instead of the copy's samples.
+  void cones_with_fronts(const std::map<std::size_t, std::vector<Face_cone> >& front_cones)
+  {
+    const std::size_t samples = cone_samples().size();
+    std::vector<char> has_front(num_faces(tm_), 0);
+    for(const auto& cf : front_cones) has_front[E_.original_face[cf.first]] = 1;
+    for(std::size_t f = 0; f < face_copies_.size(); ++f)
+    {
+      if(!has_front[f]) continue;
+      std::vector<Face_cone>& cones = face_cones_[f];
+      cones.clear();
+      std::vector<std::size_t> done; // a copy split before comes once per front
+      for(std::size_t c : face_copies_[f].copies)
+      {
+        if(std::find(done.begin(), done.end(), c) != done.end()) continue;
+        done.push_back(c);
+        const auto it = front_cones.find(c);
+        if(it != front_cones.end())
+          for(const Face_cone& front : it->second) cones.insert(cones.end(), samples, front);
+        else if(cones_read(c))
+          for(std::size_t i = 0; i < samples; ++i) cones.push_back(copy_cones_[samples * c + i]);
+      }
+    }
+  }
+
   // whether the solver read copy c's cones (an unread cone has no apex)
   bool cones_read(std::size_t c) const
   {
@@ -923,7 +954,8 @@ private:
   const std::vector<std::array<double, 3> >& cone_samples() const
   {
     if(options_.field == Field::cone) return Exact_solver::cone_samples();
-    if(options_.cone_ridge) return Exact_solver::cone_ridge_samples();
+    if(options_.cone_ridge)
+      return corner_fallback() ? Exact_solver::cone_ridge_fallback_samples() : Exact_solver::cone_ridge_samples();
     return corner_fallback() ? Exact_solver::corner_fallback_samples() : Exact_solver::corner_samples();
   }
 
@@ -946,10 +978,17 @@ private:
     st_.ridge.recombined_copies = Recombined_copy_splitter<TriangleMesh, VertexPointMap, FaceIndexMap, Point>(
         tm_, maps_.vpm, maps_.fim, E_, copy_corners_, witness_tolerance, recombined_split_angle)(face_copies_);
     std::vector<std::array<double, 3> >().swap(copy_corners_);
+    // the cone ridge (not the cone field's, whose cones are its queries') sees
+    // the fronts of a split copy as copies: it moves the kink's points too
+    std::map<std::size_t, std::vector<Face_cone> > front_cones;
+    const bool fronts_as_copies = options_.cone_ridge && options_.field != Field::cone;
     if(split_at_kinks())
+    {
       split_fronts = Kink_splitter<TriangleMesh, VertexPointMap, FaceIndexMap, Point>(
           tm_, maps_.vpm, maps_.fim, E_, copy_cones_, cone_samples(), options_.kink_angle, mean_edge_,
-          corner_fallback())(face_copies_, split_copies);
+          corner_fallback())(face_copies_, split_copies, fronts_as_copies ? &front_cones : nullptr);
+      if(!front_cones.empty()) cones_with_fronts(front_cones);
+    }
     assemble_ridge_curve(tm_, E_, split_at_kinks() ? split_fronts : face_copies_, mean_edge_, options_.minimum_angle,
                          options_.kink_angle, maps_, angles_->angle_sum, result_.polylines, result_.regions,
                          st_.ridge);
@@ -1039,8 +1078,7 @@ auto ridge_curve_impl(const TriangleMesh& tm, const Geodesic_source<TriangleMesh
 ///      (`Invalid_source_error` otherwise).
 /// \pre Every named parameter is in its range; `field(Field::cone)` and
 ///      `cone_ridge(true)` come with the exact solver (a solver with cones),
-///      `corner_fallback(true)` without the cone ridge, and `cone_ridge(false)`
-///      without the cone field (`Invalid_parameter_error` otherwise, thrown
+///      and `cone_ridge(false)` without the cone field (`Invalid_parameter_error` otherwise, thrown
 ///      before any work).
 ///
 /// \cgalNamedParamsBegin
@@ -1105,15 +1143,15 @@ auto ridge_curve_impl(const TriangleMesh& tm, const Geodesic_source<TriangleMesh
 ///     \cgalParamDefault{`default_kink_angle` (60)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{corner_fallback}
-///     \cgalParamDescription{with the exact solver's kink split of the linear ridge, a corner that no sample's front reaches exactly takes its front from a sample nearer to it: more branches found, less precisely placed}
+///     \cgalParamDescription{with the exact solver's kink split, a corner that no sample's front reaches exactly takes its front from a sample nearer to it, if that front meets the others at a ridge: the branches that pass between a corner and its sample are found}
 ///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`false`}
-///     \cgalParamExtra{not with the cone ridge: `true` makes `cone_ridge` default to `false`}
+///     \cgalParamDefault{`true`}
+///     \cgalParamExtra{ignored with the cone field and with solvers without cones}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{cone_ridge}
 ///     \cgalParamDescription{the ridge reported (`Ridge_curve::ridge_polylines()`, `compute_geodesic_ridge()`) is the cone ridge (`Ridge_curve::cone_polylines`), where the exact solver's cones meet, read on the faces near kinks; `false`: the linear field's (`Ridge_curve::polylines`)}
 ///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`true` with a solver that offers cones (`Exact_solver`) and without `corner_fallback(true)`; always with `field(Field::cone)`}
+///     \cgalParamDefault{`true` with a solver that offers cones (`Exact_solver`); always with `field(Field::cone)`}
 ///     \cgalParamExtra{`true` needs a solver with cones}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{field}

@@ -6,10 +6,12 @@
 //
 // Per face copy the exact solver gives S cones (one per sample point:
 // `Exact_solver::cone_samples()` for the cone field,
-// `Exact_solver::cone_ridge_samples()` for the default cone ridge, read on
-// the faces near kinks only): a point of the face takes, per copy,
-// the cone of the nearest sample point, the distance in the face's plane to
-// the cone's apex plus its offset; the field is the lowest over the copies.
+// `Exact_solver::cone_ridge_fallback_samples()` for the default cone ridge,
+// read on the faces near kinks only; a copy split at a kink gives one copy
+// per front, whose every sample has the front's cone): a point of the face
+// takes, per copy, the cone of the nearest sample point, the distance in the
+// face's plane to the cone's apex plus its offset; the field is the lowest
+// over the copies.
 //
 // The cone ridge is where the cones of two fronts agree: a straight bisector
 // when their offsets are equal, a branch of a hyperbola otherwise. The ridge of
@@ -111,7 +113,7 @@ struct Face_plane
 
 /// The cone field of one face: `count` cones, S per copy (copy-major), S the
 /// number of `samples` (`Exact_solver::cone_samples()`, or
-/// `Exact_solver::cone_ridge_samples()` for the cone ridge alone).
+/// `Exact_solver::cone_ridge_fallback_samples()` for the cone ridge alone).
 class Face_cone_field
 {
 public:

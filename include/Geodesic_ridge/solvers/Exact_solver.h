@@ -160,13 +160,27 @@ struct Exact_solver
   /// `corner_samples()`, then one sample much nearer to each corner
   /// (barycentric 0.98), in corner order: the corner's front where a kink
   /// passes between the corner and its first sample
-  /// (`parameters::corner_fallback`; bunny_7k from vertex 697: recall p95 at
-  /// tolerance 0.002 2.82 mean edges without them, 0.13 with them).
+  /// (`parameters::corner_fallback` with the linear ridge; bunny_7k from
+  /// vertex 697: recall p95 at tolerance 0.002 2.82 mean edges without them,
+  /// 0.13 with them).
   static const std::vector<std::array<double, 3> >& corner_fallback_samples()
   {
     static const std::vector<std::array<double, 3> > samples = {
         corner_samples()[0], corner_samples()[1], corner_samples()[2],
         {{0.98, 0.01, 0.01}}, {{0.01, 0.98, 0.01}}, {{0.01, 0.01, 0.98}}};
+    return samples;
+  }
+
+  /// `cone_ridge_samples()`, then the three samples at barycentric 0.98 of
+  /// the corners, in corner order: the samples of the default cone ridge
+  /// (`parameters::corner_fallback` with the cone ridge).
+  static const std::vector<std::array<double, 3> >& cone_ridge_fallback_samples()
+  {
+    static const std::vector<std::array<double, 3> > samples = [] {
+      std::vector<std::array<double, 3> > s = cone_ridge_samples();
+      s.insert(s.end(), corner_fallback_samples().end() - 3, corner_fallback_samples().end());
+      return s;
+    }();
     return samples;
   }
 
