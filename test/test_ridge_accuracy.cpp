@@ -431,6 +431,38 @@ TEST_CASE("the extended surface holds every shortest path, from many sources", "
   }
 }
 
+// The same check with fast marching against itself: E holds fast marching's
+// fronts if no vertex gets lower with fast marching on an E grown from many
+// more rings everywhere (10 initial rings: 2.6-4.5 times as many faces), to
+// 1 % of its distance plus a mean edge. (Against fast marching on M the
+// check fails near the ridge, where fast marching on M mixes the two fronts
+// in the triangles that straddle it: teddy_3k v0 154 vertices within 3 rings
+// of the ridge, up to 0.29 mean edges, the same with E 1.8 times larger.)
+TEST_CASE("fast marching against itself: a larger E lowers no vertex", "[ridge_accuracy][extension]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  const double relative = 0.01;
+  for(const std::string name : {"teddy_3k.off", "armadillo_2k.off"})
+  {
+    const Mesh m = load(name);
+    for(const std::size_t v : {std::size_t(0), std::size_t(m.number_of_vertices() * 3 / 10)})
+    {
+      const Mesh::Vertex_index s(static_cast<Mesh::size_type>(v));
+      INFO(name << " source vertex " << v);
+      const auto fmm = p::solver(Geodesic_ridge::Fast_marching_solver());
+      const auto rc = Geodesic_ridge::compute_ridge_curve(m, s, fmm);
+      const auto larger = Geodesic_ridge::compute_ridge_curve(m, s, p::initial_rings(10, fmm));
+      const GT::Extension_check check = GT::check_extension(m, rc, larger.vertex_distances, relative);
+      std::cout << "fast marching against itself, " << name << " v" << v << ": E "
+                << rc.statistics.extended_surface.number_of_faces << " faces, the larger "
+                << larger.statistics.extended_surface.number_of_faces << "; " << check.missing.size()
+                << " vertices lower there (worst by " << check.worst_excess << " mean edges)\n";
+      CHECK(larger.statistics.extended_surface.number_of_faces > 2 * rc.statistics.extended_surface.number_of_faces);
+      CHECK(check.missing.empty());
+    }
+  }
+}
+
 // One regression per cause found (issue 10). Each names the source that
 // showed it; the comment says what E lacked before.
 TEST_CASE("extension regressions: each cause of a missing shortest path", "[ridge_accuracy][extension]")
