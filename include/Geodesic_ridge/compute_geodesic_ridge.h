@@ -196,8 +196,9 @@ GEODESIC_RIDGE_NAMED_PARAMETER(Field, field)
 /// too, so the linear field's ridge of a default run may differ slightly
 /// from that of `cone_ridge(false)`. On the
 /// accuracy benchmark's 168 pairs (user manual, \ref GeodesicRidgeSecCone):
-/// precision p95 within 0.25 mean edge on 167 of them instead of 161, at
-/// 1.05 times the time summed over its meshes (1.3 on 1k-face meshes).
+/// precision p95 within 0.25 mean edge on 164 of them instead of 156 with
+/// the corner fallback (167 instead of 161 without), at 1.05 times the time
+/// summed over its meshes (1.3 on 1k-face meshes).
 GEODESIC_RIDGE_NAMED_PARAMETER(bool, cone_ridge)
 
 /// \ingroup PkgGeodesicRidgeNamedParameters
