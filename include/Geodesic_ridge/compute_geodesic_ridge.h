@@ -905,13 +905,19 @@ private:
     st_.extended_surface = E_.statistics;
     if(!options_.cone_ridge) return;
     // per face of M, the cones of its undominated copies, where they were read
-    const std::size_t samples = cone_samples().size();
     std::vector<std::vector<Face_cone> >& cones = cone_field ? result_.cones : face_cones_;
     cones.assign(num_faces(tm_), {});
     for(std::size_t f = 0; f < face_copies_.size(); ++f)
-      for(std::size_t c : face_copies_[f].copies)
-        if(cones_read(c))
-          for(std::size_t i = 0; i < samples; ++i) cones[f].push_back(copy_cones_[samples * c + i]);
+      for(std::size_t c : face_copies_[f].copies) append_sampled_cones(c, cones[f]);
+  }
+
+  // copy c's cones at the samples, if the solver read them
+  void append_sampled_cones(std::size_t c, std::vector<Face_cone>& cones) const
+  {
+    if(!cones_read(c)) return;
+    const std::size_t samples = cone_samples().size();
+    cones.insert(cones.end(), copy_cones_.begin() + std::ptrdiff_t(samples * c),
+                 copy_cones_.begin() + std::ptrdiff_t(samples * (c + 1)));
   }
 
   // The cone ridge's cones of each face with a copy split at a kink: per front
@@ -933,10 +939,9 @@ private:
         if(std::find(done.begin(), done.end(), c) != done.end()) continue;
         done.push_back(c);
         const auto it = front_cones.find(c);
-        if(it != front_cones.end())
+        if(it == front_cones.end()) append_sampled_cones(c, cones);
+        else
           for(const Face_cone& front : it->second) cones.insert(cones.end(), samples, front);
-        else if(cones_read(c))
-          for(std::size_t i = 0; i < samples; ++i) cones.push_back(copy_cones_[samples * c + i]);
       }
     }
   }

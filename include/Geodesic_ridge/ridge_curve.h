@@ -530,6 +530,12 @@ private:
     return false;
   }
 
+  // whether front i of x owns a corner (it becomes a split copy)
+  static bool owns_corner(const Split& x, std::size_t i)
+  {
+    return x.owner[0] == i || x.owner[1] == i || x.owner[2] == i;
+  }
+
   // step 2: one field per front that owns a corner
   std::vector<std::array<double, 3> > split_fields(std::size_t f, const std::array<double, 3>& d, const Split& x) const
   {
@@ -537,7 +543,7 @@ private:
     std::vector<std::array<double, 3> > out;
     for(std::size_t i = 0; i < x.fronts.size(); ++i)
     {
-      if(x.owner[0] != i && x.owner[1] != i && x.owner[2] != i) continue;
+      if(!owns_corner(x, i)) continue;
       out.push_back(split_field(d, x.owner, i, [&](int k) { return cone_at(x.fronts[i], p[k]); }));
     }
     return out;
@@ -554,7 +560,7 @@ private:
     std::vector<Face_cone> out;
     for(std::size_t i = 0; i < x.fronts.size(); ++i)
     {
-      if(x.owner[0] != i && x.owner[1] != i && x.owner[2] != i) continue;
+      if(!owns_corner(x, i)) continue;
       const Vector w = x.fronts[i].apex - p[0];
       const double u = CGAL::to_double(w * e1), v = CGAL::to_double(w * e2);
       const double b1 = (c * u - b * v) / det, b2 = (a * v - b * u) / det;
