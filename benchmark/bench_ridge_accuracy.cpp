@@ -8,7 +8,7 @@
 //   bench_ridge_accuracy [--max-faces N] [--tolerance T] [--recall-tolerance T]
 //                        [--sources-per-mesh N] [--random-sources R] [--seed S]
 //                        [--solver exact|vtp|fmm|cone|heat|heat-idt|dijkstra|both|exact+cone|exact+vtp|approximate] [--diagnose] [--no-reference] [--source-vertex V]...
-//                        [--spacing S] [--min-jump DEG] [--outliers] [--hole R] [--repair]
+//                        [--spacing S] [--max-subdivisions N] [--min-jump DEG] [--outliers] [--hole R] [--repair]
 //                        [--fmm-reference-rings K] [--fmm-skip-rings K] [--fmm-tolerance T]
 //                        [pipeline options] [MESH ...]
 //
@@ -239,6 +239,7 @@ int main(int argc, char** argv)
       else { std::cerr << "unknown solver " << s << "\n"; return 2; }
     }
     else if(a == "--spacing" && i + 1 < argc) ref_opt.spacing = std::stod(argv[++i]);
+    else if(a == "--max-subdivisions" && i + 1 < argc) ref_opt.max_subdivisions = std::stoi(argv[++i]);
     else if(a == "--min-jump" && i + 1 < argc) ref_opt.min_jump_degrees = std::stod(argv[++i]);
     else if(a == "--outliers") outliers = true;
     else if(a == "--diagnose") diagnose = true;
