@@ -160,9 +160,9 @@ struct Pair_result
 };
 
 // 'missing': with fast marching, against the larger E / the paths (its E solved exactly)
-std::string missing_column(const Pair_result& r, const std::string& solver)
+std::string missing_column(std::size_t missing, std::size_t paths_missing, const std::string& solver)
 {
-  return solver == "fmm" ? std::to_string(r.missing) + " / " + std::to_string(r.paths_missing) : std::to_string(r.missing);
+  return solver == "fmm" ? std::to_string(missing) + " / " + std::to_string(paths_missing) : std::to_string(missing);
 }
 
 double quantile(std::vector<double> v, double q) { return GT::internal::quantile(std::move(v), q); }
@@ -316,6 +316,10 @@ int main(int argc, char** argv)
                              : GT::distances_on_mesh<K>(mesh, src.location, exact);
       };
       if(diagnose) exact_on_mesh = on_mesh_of(true);
+      auto ridge_of = [&](const auto& np) {
+        return src.on_vertex ? Geodesic_ridge::compute_ridge_curve(mesh, src.vertex, np)
+                             : Geodesic_ridge::compute_ridge_curve(mesh, src.location, np);
+      };
       for(const std::string& solver : solvers)
       {
         // CGAL 5.5's heat method takes vertex sources only (the solver refuses points)
@@ -331,20 +335,16 @@ int main(int argc, char** argv)
         {
           auto run = [&](double t) {
             namespace p = Geodesic_ridge::parameters;
-            auto compute = [&](const auto& np) {
-              return src.on_vertex ? Geodesic_ridge::compute_ridge_curve(mesh, src.vertex, np)
-                                   : Geodesic_ridge::compute_ridge_curve(mesh, src.location, np);
-            };
-            if(solver == "fmm") return compute(p::solver(Geodesic_ridge::Fast_marching_solver(), options.parameters(t)));
+            if(solver == "fmm") return ridge_of(p::solver(Geodesic_ridge::Fast_marching_solver(), options.parameters(t)));
             if(solver == "vtp")
-              return compute(p::solver(Geodesic_ridge::Window_propagation_solver(), options.parameters(t)));
-            if(solver == "heat") return compute(p::solver(Geodesic_ridge::Heat_method_solver<>(), options.parameters(t)));
+              return ridge_of(p::solver(Geodesic_ridge::Window_propagation_solver(), options.parameters(t)));
+            if(solver == "heat") return ridge_of(p::solver(Geodesic_ridge::Heat_method_solver<>(), options.parameters(t)));
             if(solver == "heat-idt")
-              return compute(p::solver(Geodesic_ridge::Heat_method_idt_solver(), options.parameters(t)));
-            if(solver == "dijkstra") return compute(p::solver(Geodesic_ridge::Dijkstra_solver(), options.parameters(t)));
+              return ridge_of(p::solver(Geodesic_ridge::Heat_method_idt_solver(), options.parameters(t)));
+            if(solver == "dijkstra") return ridge_of(p::solver(Geodesic_ridge::Dijkstra_solver(), options.parameters(t)));
             if(solver == "cone")
-              return compute(p::field(Geodesic_ridge::Field::cone, options.exact_parameters(t)));
-            return compute(options.exact_parameters(t));
+              return ridge_of(p::field(Geodesic_ridge::Field::cone, options.exact_parameters(t)));
+            return ridge_of(options.exact_parameters(t));
           };
           // the ridge measured: the one reported (the cone ridge with the exact solver)
           auto measured = [&](const auto& rc) -> const auto& { return rc.ridge_polylines(); };
@@ -387,9 +387,7 @@ int main(int argc, char** argv)
               namespace p = Geodesic_ridge::parameters;
               const auto np = p::initial_rings(fmm_reference_rings, p::tolerance(tolerance,
                                                p::solver(Geodesic_ridge::Fast_marching_solver())));
-              return (src.on_vertex ? Geodesic_ridge::compute_ridge_curve(mesh, src.vertex, np)
-                                    : Geodesic_ridge::compute_ridge_curve(mesh, src.location, np))
-                  .vertex_distances;
+              return ridge_of(np).vertex_distances;
             };
             const GT::Extension_check check =
                 exact ? GT::check_extension(mesh, rc, exact_on_mesh, 1e-9)
@@ -404,8 +402,7 @@ int main(int argc, char** argv)
               namespace p = Geodesic_ridge::parameters;
               const auto np = p::predicted_extension(true, p::maximum_solves(1, p::cone_ridge(false,
                                                      options.exact_parameters(tolerance))));
-              const auto solved = src.on_vertex ? Geodesic_ridge::compute_ridge_curve(mesh, src.vertex, np)
-                                                : Geodesic_ridge::compute_ridge_curve(mesh, src.location, np);
+              const auto solved = ridge_of(np);
               r.paths_missing = GT::check_extension(mesh, solved, exact_on_mesh, fmm_tolerance).missing.size();
               if(solved.statistics.extended_surface.number_of_faces != rc.statistics.extended_surface.number_of_faces)
                 std::cout << "  fast marching's E has " << rc.statistics.extended_surface.number_of_faces
@@ -424,7 +421,7 @@ int main(int argc, char** argv)
                         "| %s | %zu | %ld | %s | %s | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | %d | %d | %zu | %s | %s | %s | %.3f |\n",
                         mesh_name.c_str(), std::size_t(mesh.number_of_faces()), genus, r.source.c_str(), solver.c_str(),
                         r.precision_major_p95, r.precision_all_p95, precision_max, r.recall_p95, r.recall_small_p95,
-                        ratio, rings, solves, winning, diagnose ? missing_column(r, solver).c_str() : "-",
+                        ratio, rings, solves, winning, diagnose ? missing_column(r.missing, r.paths_missing, solver).c_str() : "-",
                         diagnose ? std::to_string(r.worst_excess).substr(0, 6).c_str() : "-",
                         diagnose ? std::to_string(r.ridge_front_errors).c_str() : "-", t_ridge);
         std::cout << line << std::flush;
@@ -467,8 +464,7 @@ int main(int argc, char** argv)
                   quantile(pa, 0.5), n ? *std::max_element(pa.begin(), pa.end()) : 0.0, le1, quantile(rs_small, 0.5),
                   n ? *std::max_element(rs_small.begin(), rs_small.end()) : 0.0, worst_r ? worst_r->mesh.c_str() : "-",
                   worst_r ? worst_r->source.c_str() : "-", rle05,
-                  !diagnose ? "-" : solver == "fmm" ? (std::to_string(with_missing) + " / " + std::to_string(paths_missing)).c_str()
-                                                    : std::to_string(with_missing).c_str());
+                  diagnose ? missing_column(with_missing, paths_missing, solver).c_str() : "-");
     std::cout << line;
   }
   return 0;
