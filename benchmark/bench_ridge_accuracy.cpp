@@ -9,12 +9,20 @@
 //                        [--sources-per-mesh N] [--random-sources R] [--seed S]
 //                        [--solver exact|vtp|fmm|cone|heat|heat-idt|dijkstra|both|exact+cone|exact+vtp|approximate] [--diagnose] [--no-reference] [--source-vertex V]...
 //                        [--spacing S] [--max-subdivisions N] [--min-jump DEG] [--outliers] [--hole R] [--repair]
+//                        [--split-long-edges L]
 //                        [--fmm-reference-rings K] [--fmm-skip-rings K] [--fmm-tolerance T]
 //                        [pipeline options] [MESH ...]
 //
 // --hole R: surfaces with a border. Each mesh loses the faces with a corner
 // within R times its bounding box diagonal of its last vertex (one more border
 // loop; the name gets "_hole") before the sources are drawn.
+//
+// --split-long-edges L: the same surface triangulated otherwise. Every edge
+// longer than L mean edges is split at its midpoint (CGAL's `split_long_edges`,
+// until none is left; the name gets "_split"): a ridge that moves with the
+// triangulation is wrong on one of them. The vertices keep their indices
+// (`--source-vertex` names the same point); the distances are in the split
+// mesh's mean edges.
 //
 // --repair: meshes as people have them (OFF, OBJ, PLY: polygons, non-manifold,
 // in parts): each is read with the repair (`parameters::repair(true)`) and, if
@@ -91,6 +99,7 @@
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -186,6 +195,17 @@ bool keep_largest_part(Mesh& mesh)
 
 // Removes the faces with a corner within `radius` (times the bounding box
 // diagonal) of the last vertex: a hole, one more border loop.
+// the mesh with every edge longer than `factor` mean edges split at its midpoint
+void split_long_edges(Mesh& mesh, double factor)
+{
+  double sum = 0;
+  for(auto e : mesh.edges()) sum += std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(mesh.halfedge(e))),
+                                                                     mesh.point(mesh.target(mesh.halfedge(e)))));
+  const double longest = factor * sum / double(mesh.number_of_edges());
+  std::vector<Mesh::Edge_index> all(mesh.edges().begin(), mesh.edges().end());
+  CGAL::Polygon_mesh_processing::split_long_edges(all, longest, mesh);
+}
+
 void cut_hole(Mesh& mesh, double radius)
 {
   const CGAL::Bbox_3 box = CGAL::bbox_3(mesh.points().begin(), mesh.points().end());
@@ -210,7 +230,7 @@ int main(int argc, char** argv)
   double fmm_tolerance = 0.01;
   int fmm_skip_rings = 3, fmm_reference_rings = 10;
   bool outliers = false, diagnose = false, reference = true;
-  double hole = 0;
+  double hole = 0, split = 0;
   bool repair = false;
   std::vector<std::string> solvers = {"exact", "fmm"};
   GT::Reference_ridge_options ref_opt;
@@ -250,6 +270,7 @@ int main(int argc, char** argv)
     else if(a == "--no-reference") reference = false;
     else if(a == "--hole" && i + 1 < argc) hole = std::stod(argv[++i]);
     else if(a == "--repair") repair = true;
+    else if(a == "--split-long-edges" && i + 1 < argc) split = std::stod(argv[++i]);
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
     else files.push_back(a);
   }
@@ -291,12 +312,14 @@ int main(int argc, char** argv)
       CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(mesh);
       part = keep_largest_part(mesh) || part;
     }
+    if(split > 0) split_long_edges(mesh, split);
     std::vector<Mesh::Halfedge_index> border_cycles;
     CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(border_cycles));
     const long loops = long(border_cycles.size());
     const long chi = long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) + long(mesh.number_of_faces());
     const long genus = (2 - chi - loops) / 2;
-    const std::string mesh_name = fs::path(file).stem().string() + (part ? "_part" : "") + (hole > 0 ? "_hole" : "");
+    const std::string mesh_name = fs::path(file).stem().string() + (part ? "_part" : "") + (hole > 0 ? "_hole" : "") +
+                                  (split > 0 ? "_split" : "");
 
     std::vector<Source> sources = sources_of(mesh, per_mesh, random_sources, seed);
     if(!fixed_sources.empty())
