@@ -62,8 +62,9 @@
 //    distance on M: with the exact solver against SMSP on M (relative 1e-9 of
 //    the distance, plus 1e-9 mean edge); with fast marching against fast
 //    marching on a much larger E (the pipeline's, grown from
-//    --fmm-reference-rings rings everywhere, default 10: 2.4-3.8 times as
-//    many faces on teddy_3k and armadillo_2k), to --fmm-tolerance (default
+//    --fmm-reference-rings rings everywhere, default 10, without the margin
+//    of `parameters::fast_marching_margin`: 2.4-3.8 times as many faces on
+//    teddy_3k and armadillo_2k), to --fmm-tolerance (default
 //    0.01) of the distance plus a mean edge. With --fmm-reference-rings 0
 //    against fast marching on M beyond --fmm-skip-rings rings (default 3) of
 //    the ridge: there fast marching mixes the two fronts in the triangles
@@ -74,10 +75,11 @@
 //    paths at all: the E that its growth rule builds (the exact pipeline
 //    with its fast-marching passes deciding the growth and one exact solve:
 //    predicted_extension, maximum_solves(1)), against SMSP on M to
-//    --fmm-tolerance. Fast marching's own value at a vertex depends on E's
-//    extent by more than that where E holds every path (kitten_5k v1250:
-//    E from 3, 5 or 10 initial rings 0.74 mean edges above the exact
-//    distance at v1043, from 20 rings 0.13 above).
+//    --fmm-tolerance. Without its margin (--fast-marching-margin 0), fast
+//    marching's value at a vertex depends on E's border by more than that
+//    where E holds every path (kitten_5k v1250: E from 3, 5 or 10 initial
+//    rings 0.74 mean edges above the exact distance at v1043, from 20 rings
+//    0.13 above).
 //  * ridge fronts: on every face that the ridge crosses, the winning copies'
 //    smallest value at each corner equals that corner's distance on M (the
 //    fronts that meet there are the exact ones), same tolerances.
@@ -408,8 +410,8 @@ int main(int argc, char** argv)
             const bool exact = solver == "exact" || solver == "cone" || solver == "vtp";
             auto larger_e = [&] { // fast marching on an E grown from fmm_reference_rings rings everywhere
               namespace p = Geodesic_ridge::parameters;
-              const auto np = p::initial_rings(fmm_reference_rings, p::tolerance(tolerance,
-                                               p::solver(Geodesic_ridge::Fast_marching_solver())));
+              const auto np = p::initial_rings(fmm_reference_rings, p::fast_marching_margin(0, p::tolerance(tolerance,
+                                               p::solver(Geodesic_ridge::Fast_marching_solver()))));
               return ridge_of(np).vertex_distances;
             };
             const GT::Extension_check check =

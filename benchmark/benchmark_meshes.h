@@ -31,7 +31,7 @@ inline std::vector<std::string> benchmark_meshes(std::vector<std::string> files)
 
 /// The pipeline's knobs, settable from a benchmark's command line, so that
 /// schedules can be compared on the same meshes:
-///   --initial-rings K --extension-step K --maximum-rings K --maximum-solves K
+///   --initial-rings K --extension-step K --maximum-rings K --maximum-solves K --fast-marching-margin K
 ///   --spur-angle DEG --tree-from-solver 0|1 --predicted 0|1
 ///   --leaf-curvature DEG --branch-curvature DEG --kink-angle DEG --corner-fallback 0|1
 ///   --cone-ridge 0|1 (with the exact solver: `exact_parameters()`)
@@ -39,7 +39,8 @@ struct Pipeline_options
 {
   int initial_rings = Geodesic_ridge::default_initial_rings, extension_step = Geodesic_ridge::default_extension_step,
       maximum_rings = Geodesic_ridge::default_maximum_rings,
-      maximum_solves = Geodesic_ridge::default_maximum_solves;
+      maximum_solves = Geodesic_ridge::default_maximum_solves,
+      fast_marching_margin = Geodesic_ridge::default_fast_marching_margin;
   bool tree_from_solver = false, predicted = true, corner_fallback = true, cone_ridge = true;
   double spur_angle = Geodesic_ridge::default_minimum_spur_angle,
          leaf_curvature = Geodesic_ridge::default_leaf_curvature, kink_angle = Geodesic_ridge::default_kink_angle,
@@ -54,6 +55,7 @@ struct Pipeline_options
     else if(a == "--extension-step") extension_step = std::stoi(argv[++i]);
     else if(a == "--maximum-rings") maximum_rings = std::stoi(argv[++i]);
     else if(a == "--maximum-solves") maximum_solves = std::stoi(argv[++i]);
+    else if(a == "--fast-marching-margin") fast_marching_margin = std::stoi(argv[++i]);
     else if(a == "--leaf-curvature") leaf_curvature = std::stod(argv[++i]);
     else if(a == "--predicted") predicted = std::stoi(argv[++i]) != 0;
     else if(a == "--tree-from-solver") tree_from_solver = std::stoi(argv[++i]) != 0;
@@ -73,7 +75,7 @@ struct Pipeline_options
            p::maximum_rings(maximum_rings, p::maximum_solves(maximum_solves,
            p::minimum_spur_angle(spur_angle, p::tree_from_solver(tree_from_solver, p::predicted_extension(predicted,
            p::leaf_curvature(leaf_curvature, p::branch_curvature(branch_curvature, p::kink_angle(kink_angle,
-           p::corner_fallback(corner_fallback))))))))))));
+           p::corner_fallback(corner_fallback, p::fast_marching_margin(fast_marching_margin)))))))))))));
   }
 
   /// with the exact solver: the parameters and whether the ridge is the cone

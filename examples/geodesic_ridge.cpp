@@ -554,7 +554,7 @@ GEODESIC_RIDGE_JSON_FIELDS(Cone_ridge_statistics, tolerance, points_moved, junct
                            kept_linear_ridge,
                            largest_move)
 GEODESIC_RIDGE_JSON_FIELDS(Geodesic_ridge_statistics, solver, tolerance, tree_from_solver, solves, predicted_passes,
-                           outer_copies_winning, ring_cap_hit, rough_cut_locus, extended_surface, ridge,
+                           outer_copies_winning, ring_cap_hit, margin_rings, rough_cut_locus, extended_surface, ridge,
                            cone_ridge_traced, cone_ridge)
 GEODESIC_RIDGE_JSON_FIELDS(Refined_mesh_statistics, vertices, faces, split_faces, centre_vertices, ridge_edges,
                            unmatched_ridge_segments, largest_disagreement)
