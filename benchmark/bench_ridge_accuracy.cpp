@@ -195,9 +195,7 @@ bool keep_largest_part(Mesh& mesh)
   return true;
 }
 
-// Removes the faces with a corner within `radius` (times the bounding box
-// diagonal) of the last vertex: a hole, one more border loop.
-// the mesh with every edge longer than `factor` mean edges split at its midpoint
+// Splits every edge longer than `factor` mean edges at its midpoint (the same surface).
 void split_long_edges(Mesh& mesh, double factor)
 {
   double sum = 0;
@@ -208,6 +206,8 @@ void split_long_edges(Mesh& mesh, double factor)
   CGAL::Polygon_mesh_processing::split_long_edges(all, longest, mesh);
 }
 
+// Removes the faces with a corner within `radius` (times the bounding box
+// diagonal) of the last vertex: a hole, one more border loop.
 void cut_hole(Mesh& mesh, double radius)
 {
   const CGAL::Bbox_3 box = CGAL::bbox_3(mesh.points().begin(), mesh.points().end());
