@@ -9,7 +9,7 @@
 //                        [--sources-per-mesh N] [--random-sources R] [--seed S]
 //                        [--solver exact|vtp|fmm|cone|heat|heat-idt|dijkstra|both|exact+cone|exact+vtp|approximate] [--diagnose] [--no-reference] [--source-vertex V]...
 //                        [--spacing S] [--max-subdivisions N] [--min-jump DEG] [--outliers] [--hole R] [--repair]
-//                        [--split-long-edges L]
+//                        [--split-long-edges L] [--caps P]
 //                        [--fmm-reference-rings K] [--fmm-skip-rings K] [--fmm-tolerance T]
 //                        [pipeline options] [MESH ...]
 //
@@ -21,8 +21,18 @@
 // longer than L mean edges is split at its midpoint (CGAL's `split_long_edges`,
 // until none is left; the name gets "_split"): a ridge that moves with the
 // triangulation is wrong on one of them. The vertices keep their indices
-// (`--source-vertex` names the same point); the distances are in the split
-// mesh's mean edges.
+// (`--source-vertex` names the same point, and the vertex sources are those
+// of the mesh before the split); the distances are in the split mesh's mean
+// edges.
+//
+// --caps P: the same surface with needles (test/support's `add_caps`). In a
+// share P of the faces (drawn with std::mt19937(seed)) a vertex is inserted
+// at 1 % of the face's longest edge from that edge's midpoint and joined to
+// the corners: a cap (three nearly collinear corners, as the beetle's
+// needles) along the longest edge.
+// The vertices keep their indices (the vertex sources are those of the mesh
+// without caps); distances are in the new mesh's mean edges (the name gets
+// "_caps").
 //
 // --repair: meshes as people have them (OFF, OBJ, PLY: polygons, non-manifold,
 // in parts): each is read with the repair (`parameters::repair(true)`) and, if
@@ -85,6 +95,7 @@
 //    fronts that meet there are the exact ones), same tolerances.
 // Prints one row per (mesh, source, solver), then per solver the distribution
 // over the pairs (median, worst and where).
+#include "../test/support/analytic_meshes.h"
 #include "../test/support/reference_ridge.h"
 
 #include "../test/support/extension_checks.h"
@@ -198,10 +209,7 @@ bool keep_largest_part(Mesh& mesh)
 // Splits every edge longer than `factor` mean edges at its midpoint (the same surface).
 void split_long_edges(Mesh& mesh, double factor)
 {
-  double sum = 0;
-  for(auto e : mesh.edges()) sum += std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(mesh.halfedge(e))),
-                                                                     mesh.point(mesh.target(mesh.halfedge(e)))));
-  const double longest = factor * sum / double(mesh.number_of_edges());
+  const double longest = factor * GT::mean_edge_length(mesh);
   std::vector<Mesh::Edge_index> all(mesh.edges().begin(), mesh.edges().end());
   CGAL::Polygon_mesh_processing::split_long_edges(all, longest, mesh);
 }
@@ -232,7 +240,7 @@ int main(int argc, char** argv)
   double fmm_tolerance = 0.01;
   int fmm_skip_rings = 3, fmm_reference_rings = 10;
   bool outliers = false, diagnose = false, reference = true;
-  double hole = 0, split = 0;
+  double hole = 0, split = 0, caps = 0;
   bool repair = false;
   std::vector<std::string> solvers = {"exact", "fmm"};
   GT::Reference_ridge_options ref_opt;
@@ -273,6 +281,7 @@ int main(int argc, char** argv)
     else if(a == "--hole" && i + 1 < argc) hole = std::stod(argv[++i]);
     else if(a == "--repair") repair = true;
     else if(a == "--split-long-edges" && i + 1 < argc) split = std::stod(argv[++i]);
+    else if(a == "--caps" && i + 1 < argc) caps = std::stod(argv[++i]);
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
     else files.push_back(a);
   }
@@ -314,16 +323,27 @@ int main(int argc, char** argv)
       CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(mesh);
       part = keep_largest_part(mesh) || part;
     }
+    // the vertex sources of the surface before it is triangulated otherwise
+    // (the vertices keep their indices), the random ones on the new faces
+    std::vector<Source> sources = sources_of(mesh, per_mesh, 0, seed);
     if(split > 0) split_long_edges(mesh, split);
+    if(caps > 0)
+    {
+      const double before = GT::mean_edge_length(mesh);
+      const std::size_t n = GT::add_caps(mesh, caps, seed);
+      std::cout << fs::path(file).stem().string() << ": " << n << " caps; mean edge " << GT::mean_edge_length(mesh) / before
+                << " of the mesh's without them\n";
+    }
     std::vector<Mesh::Halfedge_index> border_cycles;
     CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(border_cycles));
     const long loops = long(border_cycles.size());
     const long chi = long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) + long(mesh.number_of_faces());
     const long genus = (2 - chi - loops) / 2;
     const std::string mesh_name = fs::path(file).stem().string() + (part ? "_part" : "") + (hole > 0 ? "_hole" : "") +
-                                  (split > 0 ? "_split" : "");
+                                  (split > 0 ? "_split" : "") + (caps > 0 ? "_caps" : "");
 
-    std::vector<Source> sources = sources_of(mesh, per_mesh, random_sources, seed);
+    const std::vector<Source> random = sources_of(mesh, 0, random_sources, seed);
+    sources.insert(sources.end(), random.begin(), random.end());
     if(!fixed_sources.empty())
     {
       sources.clear();

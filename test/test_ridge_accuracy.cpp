@@ -5,6 +5,7 @@
 // computed ridge against the exact reference ridge built from CGAL
 // Surface_mesh_shortest_path arrival directions (test/support/reference_ridge.h).
 // Distances in mean edge lengths.
+#include "support/analytic_meshes.h"
 #include "support/extension_checks.h"
 #include "support/reference_ridge.h"
 
@@ -475,11 +476,9 @@ TEST_CASE("fast marching against itself: a larger E lowers no vertex", "[ridge_a
 TEST_CASE("re-triangulation: the same surface split otherwise keeps its ridge", "[ridge_accuracy]")
 {
   const Mesh m = load("teddy_3k.off");
-  double sum = 0;
-  for(auto e : m.edges()) sum += std::sqrt(CGAL::squared_distance(m.point(m.source(m.halfedge(e))), m.point(m.target(m.halfedge(e)))));
   Mesh split = m;
   std::vector<Mesh::Edge_index> all(split.edges().begin(), split.edges().end());
-  CGAL::Polygon_mesh_processing::split_long_edges(all, 1.5 * sum / double(m.number_of_edges()), split);
+  CGAL::Polygon_mesh_processing::split_long_edges(all, 1.5 * GT::mean_edge_length(m), split);
   REQUIRE(split.number_of_faces() > m.number_of_faces() + 1000);
   for(const std::size_t v : {std::size_t(0), std::size_t(799)})
   {
@@ -495,6 +494,40 @@ TEST_CASE("re-triangulation: the same surface split otherwise keeps its ridge", 
     REQUIRE(acc.major_samples > 0);
     CHECK(rc.statistics.ridge.components == 1);
     CHECK(acc.precision_p95 <= 0.5);
+    CHECK(acc.recall_p95 <= 0.5);
+  }
+}
+
+// Thin faces (caps: three corners nearly on a line) on the same surface. Their
+// linear fields' gradients across them are noise, and before two cells that
+// agree along a thin face's edge were one front only if their gradients
+// agreed: the ridge ran along the caps (teddy_3k with a fifth of its faces
+// capped, from vertices 479 and 958: precision p95 0.60 and 0.63 of the
+// capped mesh's mean edges, 0.09 and 0.17 now; unchanged on the mesh
+// without caps, which has few thin faces).
+TEST_CASE("thin faces: caps on the same surface keep its ridge", "[ridge_accuracy]")
+{
+  const Mesh m = load("teddy_3k.off");
+  Mesh capped = m;
+  const unsigned seed = GT::test_seed(1);
+  const std::size_t caps = GT::add_caps(capped, 0.2, seed);
+  REQUIRE(caps > 500);
+  for(const std::size_t v : {std::size_t(479), std::size_t(958)})
+  {
+    const Mesh::Vertex_index s(static_cast<Mesh::size_type>(v));
+    INFO("teddy_3k source vertex " << v << ", " << caps << " caps, seed " << seed);
+    REQUIRE(capped.point(s) == m.point(s));
+    const auto ref = exact_reference(m, s);
+    const auto rc = Geodesic_ridge::compute_ridge_curve(capped, s);
+    const auto acc = GT::ridge_accuracy(ref, rc.ridge_polylines(), reference_options());
+    std::cout << std::setprecision(3) << "teddy_3k v" << v << " with " << caps << " caps (seed " << seed
+              << ") against the reference of the original: precision p95 " << acc.precision_p95 << ", recall p95 "
+              << acc.recall_p95 << "; edge pieces of thin faces made one front " << rc.statistics.ridge.thin_face_pieces
+              << "\n";
+    REQUIRE(acc.major_samples > 0);
+    CHECK(rc.statistics.ridge.components == 1);
+    CHECK(rc.statistics.ridge.thin_face_pieces > 0);
+    CHECK(acc.precision_p95 <= 0.3);
     CHECK(acc.recall_p95 <= 0.5);
   }
 }

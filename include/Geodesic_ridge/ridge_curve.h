@@ -5,7 +5,8 @@
 //
 // Every point of M is labelled by the copy that wins the lower envelope there.
 // Two labels are the same front when their copies are glued in the extended
-// surface across the edge between them (or carry equal fields). The ridge is
+// surface across the edge between them (or carry equal fields, or agree along
+// an edge of a thin face, whose gradient is noise). The ridge is
 // every boundary between different fronts: inside faces (envelope edges) and
 // along mesh edges. It is then made connected with the topology of the cut
 // locus: the regions of M minus the ridge are merged (weakest ridge segment
@@ -96,6 +97,9 @@ struct Ridge_curve_statistics
   std::size_t split_copies = 0;           ///< copies split at a kink between their corners' fronts (cones)
   std::size_t envelope_segments = 0;      ///< inside faces, between different fronts
   std::size_t edge_segments = 0;          ///< along mesh edges, between different fronts
+  /// edge pieces of thin faces whose two sides are one front by their values
+  /// alone (their gradients disagree; a thin face has none to trust)
+  std::size_t thin_face_pieces = 0;
   std::size_t regions_before_merge = 0;   ///< components of M minus the raw ridge
   std::size_t merged_segments = 0;        ///< segments removed to merge regions
   std::size_t rejoined_segments = 0;      ///< merged segments put back to join two pieces of the ridge
@@ -892,9 +896,38 @@ private:
   // the kink shows the ridge there.
   bool kinked(const Gradient_jump& j) const { return kink_angle_ > 0 && j.angle >= kink_angle_; }
 
+  // Thin faces: height over the longest edge below `thin_face_ratio` of that
+  // edge (caps, three corners nearly on a line, and needles). A linear field
+  // interpolates the distance along the long edge from its two ends only, and
+  // the corner across it lies a small height h away: the gradient across the
+  // face is their difference divided by h, so the interpolation's error
+  // (which grows with the square of the length) becomes a gradient that may
+  // point anywhere. Two cells on either side of such a face's edge that agree
+  // along it were then a ridge along the edge (the gradients disagree) that
+  // is no ridge: on bunny_1k and teddy_3k with caps added (their surfaces
+  // unchanged, `bench_ridge_accuracy --caps 0.2`), 80-90 % of the ridge samples
+  // more than half a mean edge off lay on caps, and the beetle's needles
+  // likewise (user manual, \ref GeodesicRidgeSecThinFaces).
+  void thin_faces()
+  {
+    const double thin_face_ratio = 0.05;
+    thin_.assign(nf_, 0);
+    for(std::size_t f = 0; f < nf_; ++f)
+    {
+      const auto p = faces_.corner_points(f);
+      double longest2 = 0;
+      for(int k = 0; k < 3; ++k)
+        longest2 = (std::max)(longest2, CGAL::to_double(CGAL::squared_distance(p[k], p[(k + 1) % 3])));
+      // twice the area is the longest edge times the height over it
+      const double twice_area = std::sqrt(CGAL::to_double(CGAL::squared_area(p[0], p[1], p[2]))) * 2;
+      thin_[f] = twice_area < thin_face_ratio * longest2;
+    }
+  }
+
   // Along mesh edges: every edge split by both sides' cell boundaries.
   void segments_along_edges()
   {
+    thin_faces();
     std::vector<char> edge_done(num_edges(tm_), 0);
     for(std::size_t f1 = 0; f1 < nf_; ++f1)
     {
@@ -997,8 +1030,11 @@ private:
       // a front of a split copy is one front with a glued copy only where their fields agree
       const bool glued =
           glued_across(p.c1, k1, p.c2) && !kinked(p.jump) && !cells_[p.c1].split && !cells_[p.c2].split;
-      if(glued || one_front_along(p.c1, k1, p.c2, k2, p.ta, p.tb, p.jump))
+      const bool thin = thin_[f1] || thin_[f2];
+      if(glued || one_front_along(p.c1, k1, p.c2, k2, p.ta, p.tb, p.jump, thin))
       {
+        if(!glued && thin && !one_front_along(p.c1, k1, p.c2, k2, p.ta, p.tb, p.jump, false))
+          ++st_.thin_face_pieces;
         fronts_.unite(p.c1, p.c2);
         continue;
       }
@@ -1011,9 +1047,10 @@ private:
   // One front across the edge piece [ta, tb]: equal values along it and no
   // real gradient jump (below the spur angle: copies of one front, one slightly
   // inexact off the edge). Equal values alone are no test: where the ridge runs
-  // along the edge, both fronts agree on it.
+  // along the edge, both fronts agree on it. Except on an edge of a thin face
+  // (`thin`, see thin_faces()), whose gradient is no test either.
   bool one_front_along(std::size_t c1, int k1, std::size_t c2, int k2, const Q& ta, const Q& tb,
-                       const Gradient_jump& jump) const
+                       const Gradient_jump& jump, bool thin) const
   {
     auto value = [&](const Cell& c, int k, const Q& tq) { // tq along corner k -> k+1
       const double tt = CGAL::to_double(tq);
@@ -1022,7 +1059,7 @@ private:
     auto agree = [&](const Q& t) {
       return std::abs(value(cells_[c1], k1, t) - value(cells_[c2], k2, Q(1) - t)) <= same_front_tolerance_;
     };
-    return agree(ta) && agree(tb) && (jump.strength <= 1e-6 || jump.angle < minimum_angle_);
+    return agree(ta) && agree(tb) && (thin || jump.strength <= 1e-6 || jump.angle < minimum_angle_);
   }
 
   // One region: merge the regions of M minus the ridge, weakest segment first.
@@ -1561,6 +1598,7 @@ private:
   const Faces_by_index<TriangleMesh, typename Maps::Vertex_point_map> faces_;
   const std::size_t nf_;
   const double same_front_tolerance_;
+  std::vector<char> thin_; // per face of M: thin (see thin_faces())
   // per face: its envelope, either the shared whole-triangle one or one of
   // `computed_` (a deque: pointers into it stay valid as it grows)
   Lower_envelope<Q> whole_triangle_;

@@ -42,6 +42,7 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
@@ -95,6 +96,39 @@ inline double mean_edge_length(const Mesh& m)
   for(auto e : m.edges())
     s += std::sqrt(CGAL::squared_distance(m.point(m.source(m.halfedge(e))), m.point(m.target(m.halfedge(e)))));
   return s / static_cast<double>(m.number_of_edges());
+}
+
+/// Caps on the same surface: in a share `share` of the faces (drawn with
+/// std::mt19937(seed)), a vertex inside the face at 1 % of its longest edge
+/// from that edge's midpoint, joined to the three corners. The face between
+/// it and the longest edge is a cap (three nearly collinear corners, like the
+/// needles of scanned and CAD models); the surface is unchanged and the
+/// vertices keep their indices. Returns the number of caps.
+inline std::size_t add_caps(Mesh& mesh, double share, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  std::vector<Mesh::Face_index> chosen;
+  for(auto f : mesh.faces())
+    if(uniform(random) < share) chosen.push_back(f);
+  for(auto f : chosen)
+  {
+    auto h = mesh.halfedge(f), longest = h; // the longest edge's halfedge in f
+    double longest_l2 = 0;
+    for(int k = 0; k < 3; ++k, h = mesh.next(h))
+    {
+      const double l2 = CGAL::squared_distance(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)));
+      if(l2 > longest_l2) { longest_l2 = l2; longest = h; }
+    }
+    const Point_3 a = mesh.point(mesh.source(longest)), b = mesh.point(mesh.target(longest)),
+                  c = mesh.point(mesh.target(mesh.next(longest)));
+    const Point_3 m = CGAL::midpoint(a, b);
+    const double height = std::sqrt(CGAL::squared_distance(c, K::Line_3(a, b)));
+    const double t = 0.01 * std::sqrt(longest_l2) / height;
+    const auto v = mesh.target(CGAL::Euler::add_center_vertex(longest, mesh));
+    mesh.point(v) = m + t * (c - m);
+  }
+  return chosen.size();
 }
 
 // ---------------------------------------------------------------------------
