@@ -29,10 +29,9 @@
 // share P of the faces (drawn with std::mt19937(seed)) a vertex is inserted
 // at 1 % of the face's longest edge from that edge's midpoint and joined to
 // the corners: a cap (three nearly collinear corners, as the beetle's
-// needles) along the longest edge.
-// The vertices keep their indices (the vertex sources are those of the mesh
-// without caps); distances are in the new mesh's mean edges (the name gets
-// "_caps").
+// needles) along the longest edge. The vertices keep their indices (the
+// vertex sources are those of the mesh without caps); distances are in the
+// new mesh's mean edges (the name gets "_caps").
 //
 // --repair: meshes as people have them (OFF, OBJ, PLY: polygons, non-manifold,
 // in parts): each is read with the repair (`parameters::repair(true)`) and, if
