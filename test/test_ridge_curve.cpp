@@ -445,6 +445,51 @@ TEST_CASE("convex polyhedra: the ridge reaches every corner", "[ridge_curve]")
   }
 }
 
+// A free end of the cut locus of a convex polyhedron is a corner, and the two
+// fronts meet there at about its angle deficit (90 degrees on a box). A weak
+// end near a corner is kept by the spur pruning (the corner rule) only with a
+// jump of at least a third of the spur angle: the box's faces (flat, a CAD
+// model's kind) made spurs near its corners with jumps of 0.6-4.6 degrees from
+// these three sources, all kept before that floor (2026-12-06; fandisk's
+// corners likewise).
+TEST_CASE("convex polyhedra: no weak spur near a corner", "[ridge_curve]")
+{
+  const unsigned seed = test_seed(20260202);
+  const Subdivided_polyhedron poly = make_subdivided_polyhedron(box_corners_and_faces(2, 1, 0.7), 8, 0.25, seed);
+  const Mesh& m = poly.mesh;
+  const double h = mean_edge_length(m);
+  const double floor_angle = Geodesic_ridge::default_minimum_spur_angle / 3;
+  for(std::size_t k : {128, 192, 256})
+  {
+    const vertex_descriptor s(static_cast<Mesh::size_type>(k));
+    std::ostringstream what;
+    what << "box 2x1x0.7 n=8 (" << m.number_of_faces() << " faces) perturbation=0.25 seed=" << seed
+         << " source vertex " << s;
+    INFO(what.str());
+    const auto rc = run(m, s, Geodesic_ridge::default_tolerance, what.str());
+    if(!rc) continue;
+    std::map<std::array<double, 3>, int> ends;
+    for(const auto& pl : rc->ridge_polylines())
+      for(const Ridge_point* p : {&pl.front(), &pl.back()}) ++ends[{{p->point.x(), p->point.y(), p->point.z()}}];
+    std::size_t free_ends = 0, weak_off_corner = 0;
+    for(const auto& pl : rc->ridge_polylines())
+      for(const Ridge_point* p : {&pl.front(), &pl.back()})
+      {
+        if(ends[{{p->point.x(), p->point.y(), p->point.z()}}] != 1) continue;
+        ++free_ends;
+        double to_corner = std::numeric_limits<double>::infinity();
+        for(vertex_descriptor c : poly.corner_vertices)
+          to_corner = std::min(to_corner, std::sqrt(CGAL::squared_distance(p->point, m.point(c))) / h);
+        INFO("free end " << p->point << " in face " << p->face << ": jump " << p->angle << " degrees, "
+                         << to_corner << " mean edges from the nearest corner");
+        if(to_corner > 0.5 && p->angle < floor_angle) ++weak_off_corner;
+        CHECK(!(to_corner > 0.5 && p->angle < floor_angle));
+      }
+    std::cout << "[ridge_curve] " << what.str() << ": free ends " << free_ends << " (corners 8), weak ends off the corners "
+              << weak_off_corner << "\n";
+  }
+}
+
 // Genus g: one component and 2g independent cycles, from several sources.
 TEST_CASE("tori and higher genus: one component with 2g cycles", "[ridge_curve]")
 {
