@@ -9,7 +9,7 @@
 //                        [--sources-per-mesh N] [--random-sources R] [--seed S]
 //                        [--solver exact|vtp|fmm|cone|heat|heat-idt|dijkstra|both|exact+cone|exact+vtp|approximate] [--diagnose] [--no-reference] [--source-vertex V]...
 //                        [--spacing S] [--max-subdivisions N] [--min-jump DEG] [--outliers] [--hole R] [--repair]
-//                        [--split-long-edges L] [--caps P]
+//                        [--split-long-edges L] [--caps P] [--boxes]
 //                        [--fmm-reference-rings K] [--fmm-skip-rings K] [--fmm-tolerance T]
 //                        [pipeline options] [MESH ...]
 //
@@ -32,6 +32,14 @@
 // needles) along the longest edge. The vertices keep their indices (the
 // vertex sources are those of the mesh without caps); distances are in the
 // new mesh's mean edges (the name gets "_caps").
+//
+// --boxes: two boxes 2 x 1 x 0.7 made as CAD models are (flat faces, sharp
+// creases; test/support's analytic meshes), after the MESH arguments (alone
+// when there are none): "box_subdivided", every side split 8 x 8 and
+// perturbed within its plane (seed 20260202, as the test "convex polyhedra:
+// the ridge reaches every corner"), and "box_fans", every side a fan of 24
+// long faces from an inner point. The cut locus of a convex polyhedron ends
+// at its corners only.
 //
 // --repair: meshes as people have them (OFF, OBJ, PLY: polygons, non-manifold,
 // in parts): each is read with the repair (`parameters::repair(true)`) and, if
@@ -240,7 +248,7 @@ int main(int argc, char** argv)
   int fmm_skip_rings = 3, fmm_reference_rings = 10;
   bool outliers = false, diagnose = false, reference = true;
   double hole = 0, split = 0, caps = 0;
-  bool repair = false;
+  bool repair = false, boxes = false;
   std::vector<std::string> solvers = {"exact", "fmm"};
   GT::Reference_ridge_options ref_opt;
   std::vector<std::string> files;
@@ -281,10 +289,12 @@ int main(int argc, char** argv)
     else if(a == "--repair") repair = true;
     else if(a == "--split-long-edges" && i + 1 < argc) split = std::stod(argv[++i]);
     else if(a == "--caps" && i + 1 < argc) caps = std::stod(argv[++i]);
+    else if(a == "--boxes") boxes = true;
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
     else files.push_back(a);
   }
-  files = benchmark_meshes(files);
+  if(!boxes || !files.empty()) files = benchmark_meshes(files);
+  if(boxes) { files.push_back("box_subdivided"); files.push_back("box_fans"); }
 
   std::cout << "Sources per mesh: vertices floor(i V / " << per_mesh << "), i = 0.." << per_mesh - 1 << ", and "
             << random_sources << " random Face_locations (face uniform by index, point uniform on it; "
@@ -310,8 +320,11 @@ int main(int argc, char** argv)
   for(const std::string& file : files)
   {
     Mesh mesh;
-    try { Geodesic_ridge::IO::read_triangle_mesh(file, mesh, Geodesic_ridge::parameters::repair(repair)); }
-    catch(const Geodesic_ridge::Error& e) { std::cerr << file << ": " << e.what() << "\n"; continue; }
+    if(file == "box_subdivided") mesh = GT::make_subdivided_polyhedron(GT::box_corners_and_faces(2, 1, 0.7), 8, 0.25, 20260202).mesh;
+    else if(file == "box_fans") mesh = GT::make_fan_box(2, 1, 0.7, 6).mesh;
+    else
+      try { Geodesic_ridge::IO::read_triangle_mesh(file, mesh, Geodesic_ridge::parameters::repair(repair)); }
+      catch(const Geodesic_ridge::Error& e) { std::cerr << file << ": " << e.what() << "\n"; continue; }
     bool part = keep_largest_part(mesh);
     if(mesh.number_of_faces() > max_faces) continue;
     if(hole > 0)

@@ -535,6 +535,45 @@ inline Subdivided_polyhedron make_subdivided_polyhedron(const Polyhedron_descrip
   return out;
 }
 
+/// The box [0,dx] x [0,dy] x [0,dz] as CAD models triangulate flat faces:
+/// each side a fan of 4n long faces from one inner point (at 0.37 and 0.58 of
+/// the side's two axes), n points per side edge. The corners are
+/// `corner_vertices` (the box's eight, in `box_corners_and_faces()` order).
+inline Subdivided_polyhedron make_fan_box(double dx, double dy, double dz, int n)
+{
+  if(n < 1) throw std::invalid_argument("make_fan_box: n >= 1");
+  Subdivided_polyhedron out;
+  out.description = box_corners_and_faces(dx, dy, dz);
+  std::vector<Point_3> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::map<std::array<long, 3>, std::size_t> id; // points on shared edges, by rounded coordinates
+  auto vertex = [&](const Point_3& p) {
+    const std::array<long, 3> key = {{std::lround(p.x() * 1e9), std::lround(p.y() * 1e9), std::lround(p.z() * 1e9)}};
+    const auto it = id.find(key);
+    if(it != id.end()) return it->second;
+    points.push_back(p);
+    return id[key] = points.size() - 1;
+  };
+  for(const auto& face : out.description.faces) // quadrilaterals, outward
+  {
+    std::vector<Point_3> ring;
+    for(std::size_t c = 0; c < 4; ++c)
+    {
+      const Point_3& a = out.description.corners[face[c]];
+      const Point_3& b = out.description.corners[face[(c + 1) % 4]];
+      for(int i = 0; i < n; ++i) ring.push_back(a + (double(i) / n) * (b - a));
+    }
+    const Point_3& o = out.description.corners[face[0]];
+    const Vector_3 u = out.description.corners[face[1]] - o, w = out.description.corners[face[3]] - o;
+    const std::size_t centre = vertex(o + 0.37 * u + 0.58 * w);
+    for(std::size_t i = 0; i < ring.size(); ++i) triangles.push_back({centre, vertex(ring[i]), vertex(ring[(i + 1) % ring.size()])});
+  }
+  out.mesh = mesh_from_soup(points, triangles);
+  for(const Point_3& c : out.description.corners)
+    out.corner_vertices.push_back(Mesh::Vertex_index(static_cast<Mesh::size_type>(vertex(c))));
+  return out;
+}
+
 // ---------------------------------------------------------------------------
 // Surfaces with boundary
 
