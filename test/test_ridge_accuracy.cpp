@@ -531,6 +531,32 @@ TEST_CASE("thin faces: caps on the same surface keep its ridge", "[ridge_accurac
   }
 }
 
+// CAD faces: a box whose sides are fans of long faces (`make_fan_box`, as
+// `bench_ridge_accuracy --boxes`). The cut graph K follows the fans' edges,
+// and two sheets of E that carry one front (one reaching some corners around
+// a vertex of K, a little longer) meet along it; their linear fields, each
+// inexact at a corner, jump by 30-90 degrees there, and a ridge was drawn
+// where none is. The fronts' arrival directions from the solver's cones jump
+// by a few degrees there. Precision p95 (>= 30 degrees) from vertices 0, 7,
+// 37 and 44 before: 1.14, 1.07, 0.74 and 0.65 mean edges; now 0.06-0.14.
+TEST_CASE("CAD faces: a ridge segment's jump is its fronts' arrival directions", "[ridge_accuracy]")
+{
+  const Mesh m = GT::make_fan_box(2, 1, 0.7, 6).mesh;
+  for(const std::size_t v : {std::size_t(0), std::size_t(7), std::size_t(37), std::size_t(44)})
+  {
+    const Mesh::Vertex_index s(static_cast<Mesh::size_type>(v));
+    INFO("box 2 x 1 x 0.7 of fans (" << m.number_of_faces() << " faces), source vertex " << v);
+    const auto rc = Geodesic_ridge::compute_ridge_curve(m, s);
+    const auto acc = GT::ridge_accuracy(exact_reference(m, s), rc.ridge_polylines(), reference_options());
+    std::cout << std::setprecision(3) << "box of fans v" << v << ": precision p95 " << acc.precision_p95
+              << ", recall p95 " << acc.recall_p95 << ", free ends " << rc.statistics.ridge.free_ends << "\n";
+    REQUIRE(acc.major_samples > 0);
+    CHECK(rc.statistics.ridge.components == 1);
+    CHECK(acc.precision_p95 <= 0.3);
+    CHECK(acc.recall_p95 <= 0.5);
+  }
+}
+
 // The margin of fast marching (`parameters::fast_marching_margin`): without
 // it, bunny_1k's two random sources of `bench_ridge_accuracy` had 8 and 4
 // vertices 0.20 and 0.38 mean edges lower with fast marching on an E grown

@@ -1036,9 +1036,12 @@ private:
           corner_fallback())(face_copies_, split_copies, fronts_as_copies ? &front_cones : nullptr);
       if(!front_cones.empty()) cones_with_fronts(front_cones);
     }
+    // the cone ridge's cones (the copies' and the split fronts') give the
+    // fronts' arrival directions at the ridge segments
+    const Copy_cones cones{&copy_cones_, &front_cones, &cone_samples()};
     assemble_ridge_curve(tm_, E_, split_at_kinks() ? split_fronts : face_copies_, mean_edge_, options_.minimum_angle,
-                         options_.kink_angle, maps_, angles_->angle_sum, result_.polylines, result_.regions,
-                         st_.ridge);
+                         options_.kink_angle, maps_, angles_->angle_sum, result_.polylines, result_.regions, st_.ridge,
+                         fronts_as_copies ? &cones : nullptr);
     st_.ridge.split_copies = split_copies;
   }
 

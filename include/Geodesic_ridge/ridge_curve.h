@@ -632,6 +632,16 @@ Gradient_jump gradient_jump_across_edge(const Point& a, const Point& b, const Po
                        std::atan2(std::abs(x1 * y2 - y1 * x2), x1 * x2 + y1 * y2) * 180 / CGAL_PI};
 }
 
+// The solver's cones: S per copy of E at the S `samples` (a copy whose cones
+// were not read has no apex), and per copy split at a kink the cones of its
+// fronts in the order of its fields (`Kink_splitter`).
+struct Copy_cones
+{
+  const std::vector<Face_cone>* per_copy;
+  const std::map<std::size_t, std::vector<Face_cone> >* split_fronts;
+  const std::vector<std::array<double, 3> >* samples;
+};
+
 // Stage 3 as its named steps (the manual's order), over the state they share:
 // the envelope of every face and its cells (one per surviving copy), the ridge
 // nodes (exact keys) and segments, and the fronts (cells that are one front).
@@ -649,10 +659,11 @@ public:
   Ridge_curve_assembler(const TriangleMesh& tm, const Extended_surface<Point>& E,
                         const std::vector<Face_copies>& face_copies, double mean_edge, double minimum_angle,
                         double kink_angle, const Maps& maps, const std::vector<double>& angle_sum,
-                        std::vector<std::vector<Ridge_region_cell> >& regions, Ridge_curve_statistics& st)
+                        std::vector<std::vector<Ridge_region_cell> >& regions, Ridge_curve_statistics& st,
+                        const Copy_cones* cones = nullptr)
     : tm_(tm), maps_(maps), E_(E), face_copies_(face_copies), mean_edge_(mean_edge), minimum_angle_(minimum_angle),
       kink_angle_(kink_angle), angle_sum_(angle_sum), regions_(regions), st_(st), faces_(tm, maps.vpm, maps.fim),
-      nf_(num_faces(tm)), same_front_tolerance_(1e-6 * mean_edge)
+      nf_(num_faces(tm)), same_front_tolerance_(1e-6 * mean_edge), cones_(cones)
   {}
 
   void run(std::vector<std::vector<Ridge_point<Point> > >& polylines)
@@ -672,7 +683,8 @@ public:
 
 private:
   // a cell: its copy, its linear field and the field's gradient (in the face's plane)
-  struct Cell { std::size_t copy; std::array<double, 3> field, gradient; bool split; };
+  // (entry: its index among the face's copies, as in `Face_copies`)
+  struct Cell { std::size_t copy; std::array<double, 3> field, gradient; bool split; std::size_t entry; };
   struct Segment { std::size_t a, b, left, right; double strength; double angle; bool ridge; };
   // an interval of an edge (t along it) and the cell that wins there on one side
   struct Interval { Q lo, hi; std::size_t cell; };
@@ -732,7 +744,8 @@ private:
       for(const auto& c : envelope_of_[f]->cells)
       {
         const std::array<double, 3>& field = fc.fields[c.copy];
-        cells_.push_back(Cell{fc.copies[c.copy], field, field_gradient(cp, field), !fc.split.empty() && fc.split[c.copy]});
+        cells_.push_back(
+            Cell{fc.copies[c.copy], field, field_gradient(cp, field), !fc.split.empty() && fc.split[c.copy], c.copy});
         Ridge_region_cell rc;
         rc.copy = fc.copies[c.copy];
         rc.field = field;
@@ -847,7 +860,7 @@ private:
       {
         const std::size_t ca = cell_of(f, s.copy_a), cb = cell_of(f, s.copy_b);
         if(same_field(cells_[ca].field, cells_[cb].field)) { fronts_.unite(ca, cb); continue; }
-        const Gradient_jump j = gradient_jump_in_face(cells_[ca], cells_[cb]);
+        const Gradient_jump j = front_jump_in_face(f, ca, cb, s.endpoints);
         segments_.push_back(
             Segment{node_at(f, s.endpoints[0]), node_at(f, s.endpoints[1]), ca, cb, j.strength, j.angle, true});
         ++st_.envelope_segments;
@@ -858,9 +871,101 @@ private:
   // the jump between the linear fields of two cells of one face
   static Gradient_jump gradient_jump_in_face(const Cell& a, const Cell& b)
   {
+    return jump_between(a.gradient, b.gradient);
+  }
+
+  // The jump of a ridge segment: between the arrival directions of its two
+  // fronts, read from the solver's cones, where both cells give one; else
+  // between their linear fields. A linear field is exact at its copy's
+  // corners only: a copy inexact at one corner (a sheet of E that reaches it
+  // around a vertex of the cut K, a little longer) has a gradient that points
+  // anywhere. Two sheets of one front then met at an envelope edge (or a mesh
+  // edge) whose linear jump was 30-90 degrees, drawn as a strong ridge where
+  // none is: on CAD models, whose K follows the grid lines of flat faces
+  // (`bench_ridge_accuracy --boxes`, box_fans from v0: a ridge line along a
+  // grid line, precision p95 1.1 mean edges; the cones' jump there 1-5
+  // degrees). Measured in `segments_inside_faces` and `segments_on_edge`.
+  Gradient_jump front_jump_in_face(std::size_t f, std::size_t ca, std::size_t cb,
+                                   const std::array<std::array<Q, 3>, 2>& ends) const
+  {
+    std::array<double, 3> mid;
+    for(int k = 0; k < 3; ++k) mid[k] = CGAL::to_double((ends[0][k] + ends[1][k]) / 2);
+    std::array<double, 3> da, db;
+    if(arrival_direction(f, ca, mid, da) && arrival_direction(f, cb, mid, db)) return jump_between(da, db);
+    return gradient_jump_in_face(cells_[ca], cells_[cb]);
+  }
+
+  // The arrival direction (unit) of cell c's front at the point `at`
+  // (barycentric) of its face f: from the apex of the cone of the sample
+  // nearest to it, if the solver read the copy's cones and those of all its
+  // samples point within `consistent_angle` of it there. A copy whose
+  // samples' cones point apart straddles a kink (the sample nearest to the
+  // segment may lie beyond it); the cones of one front's windows around a
+  // vertex of K point a few degrees apart. Measured (`bench_ridge_accuracy`,
+  // exact solver; precision p95 (>= 30 degrees) <= 0.25 / <= 0.5; pairs whose
+  // recall at the default tolerance is above a mean edge): any cone, 168
+  // pairs 167 / 168 and 4 (bunny_7k v3136 lost a branch of 90-degree jumps:
+  // the nearest samples of unsplit copies lay beyond a kink), real models 60
+  // / 68; within 5 degrees 165 / 168 and 1, real 56 / 67; within 15 degrees
+  // 166 / 168 and 2, real 59 / 70.
+  bool arrival_direction(std::size_t f, std::size_t c, const std::array<double, 3>& at,
+                         std::array<double, 3>& direction) const
+  {
     typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
-    const std::array<double, 3>& ga = a.gradient;
-    const std::array<double, 3>& gb = b.gradient;
+    const double consistent_angle = 15;
+    if(!cones_) return false;
+    const std::size_t S = cones_->samples->size();
+    const Cell& cell = cells_[c];
+    const Face_cone* split_front = nullptr; // a front of a copy split at a kink: its cone everywhere
+    if(cell.split)
+    {
+      const auto it = cones_->split_fronts->find(cell.copy);
+      if(it == cones_->split_fronts->end()) return false; // (split into nearer copies' fronts)
+      const std::vector<std::size_t>& entries = face_copies_[f].copies;
+      const std::size_t front = std::size_t(std::count(entries.begin(), entries.begin() + cell.entry, cell.copy));
+      if(front >= it->second.size()) return false;
+      split_front = &it->second[front];
+    }
+    else if(S * (cell.copy + 1) > cones_->per_copy->size()) return false;
+    auto cone_at_sample = [&](std::size_t i) -> const Face_cone& {
+      return split_front ? *split_front : (*cones_->per_copy)[S * cell.copy + i];
+    };
+    std::size_t nearest = 0;
+    double nearest_d2 = std::numeric_limits<double>::infinity();
+    for(std::size_t i = 0; i < S; ++i)
+    {
+      const std::array<double, 3>& q = (*cones_->samples)[i];
+      double d2 = 0;
+      for(int k = 0; k < 3; ++k) d2 += (q[k] - at[k]) * (q[k] - at[k]);
+      if(d2 < nearest_d2) { nearest_d2 = d2; nearest = i; }
+    }
+    const auto p = faces_.corner_points(f);
+    const Point x = barycentric_to_point(at, p[0], p[1], p[2]);
+    auto from_apex = [&](std::size_t i, Vector& v) {
+      const Face_cone& cone = cone_at_sample(i);
+      // not read, or the source (or an apex) at the sample
+      if(std::abs(cone.apex[0] + cone.apex[1] + cone.apex[2] - 1) > 0.5 ||
+         (!split_front && cone.apex == (*cones_->samples)[i]))
+        return false;
+      v = x - barycentric_to_point(cone.apex, p[0], p[1], p[2]);
+      return v != CGAL::NULL_VECTOR;
+    };
+    Vector v;
+    if(!from_apex(nearest, v)) return false;
+    for(std::size_t i = 0; i < S; ++i)
+    {
+      Vector w;
+      if(!from_apex(i, w) || CGAL::to_double(CGAL::approximate_angle(v, w)) > consistent_angle) return false;
+    }
+    const double length = std::sqrt(CGAL::to_double(v.squared_length()));
+    direction = {{CGAL::to_double(v.x()) / length, CGAL::to_double(v.y()) / length, CGAL::to_double(v.z()) / length}};
+    return true;
+  }
+
+  // the jump between two gradients of one face
+  static Gradient_jump jump_between(const std::array<double, 3>& ga, const std::array<double, 3>& gb)
+  {
+    typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
     const Vector va(ga[0], ga[1], ga[2]), vb(gb[0], gb[1], gb[2]);
     const double strength = std::sqrt(CGAL::to_double((va - vb).squared_length()));
     const double angle =
@@ -1039,7 +1144,8 @@ private:
         continue;
       }
       const auto [a, b] = piece_nodes(f1, k1, p);
-      segments_.push_back(Segment{a, b, p.c1, p.c2, p.jump.strength, p.jump.angle, true});
+      const Gradient_jump j = front_jump_across(f1, k1, f2, k2, p);
+      segments_.push_back(Segment{a, b, p.c1, p.c2, j.strength, j.angle, true});
       ++st_.edge_segments;
     }
   }
@@ -1060,6 +1166,24 @@ private:
       return std::abs(value(cells_[c1], k1, t) - value(cells_[c2], k2, Q(1) - t)) <= same_front_tolerance_;
     };
     return agree(ta) && agree(tb) && (thin || jump.strength <= 1e-6 || jump.angle < minimum_angle_);
+  }
+
+  // the jump across the piece p of edge k1 of f1 (edge k2 of f2), at its
+  // middle, as `front_jump_in_face`
+  Gradient_jump front_jump_across(std::size_t f1, int k1, std::size_t f2, int k2, const Edge_piece& p) const
+  {
+    const double t = CGAL::to_double((p.ta + p.tb) / 2);
+    std::array<double, 3> at1 = {{0, 0, 0}}, at2 = at1; // the middle, barycentric in f1 and in f2
+    at1[k1] = 1 - t;
+    at1[(k1 + 1) % 3] = t;
+    at2[k2] = t;
+    at2[(k2 + 1) % 3] = 1 - t;
+    std::array<double, 3> d1, d2;
+    if(at_source(f1, k1) || at_source(f2, k2) || !arrival_direction(f1, p.c1, at1, d1) ||
+       !arrival_direction(f2, p.c2, at2, d2))
+      return p.jump;
+    const auto cp1 = faces_.corner_points(f1), cp2 = faces_.corner_points(f2);
+    return gradient_jump_across_edge(cp1[k1], cp1[(k1 + 1) % 3], cp1[(k1 + 2) % 3], cp2[(k2 + 2) % 3], d1, d2);
   }
 
   // One region: merge the regions of M minus the ridge, weakest segment first.
@@ -1611,6 +1735,7 @@ private:
   const Faces_by_index<TriangleMesh, typename Maps::Vertex_point_map> faces_;
   const std::size_t nf_;
   const double same_front_tolerance_;
+  const Copy_cones* cones_; // the solver's cones, if read (else the linear fields' jumps)
   std::vector<char> thin_; // per face of M: thin (see thin_faces())
   // per face: its envelope, either the shared whole-triangle one or one of
   // `computed_` (a deque: pointers into it stay valid as it grows)
@@ -1636,10 +1761,10 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
                           const std::vector<double>& angle_sum,
                           std::vector<std::vector<Ridge_point<Point> > >& polylines,
                           std::vector<std::vector<Ridge_region_cell> >& regions,
-                          Ridge_curve_statistics& st)
+                          Ridge_curve_statistics& st, const Copy_cones* cones = nullptr)
 {
   Ridge_curve_assembler<TriangleMesh, Maps>(tm, E, face_copies, mean_edge, minimum_angle, kink_angle, maps, angle_sum,
-                                            regions, st)
+                                            regions, st, cones)
       .run(polylines);
 }
 
