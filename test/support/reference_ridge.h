@@ -578,7 +578,7 @@ class Nearest_points
 
 public:
   explicit Nearest_points(const std::vector<Point_3>& pts)
-    : pts_(pts), map_(CGAL::make_property_map(pts)),
+    : pts_(pts), map_(CGAL::make_property_map(pts.data())), // (no element of an empty vector is bound)
       tree_(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(pts.size()),
             typename Tree::Splitter(), Traits(map_))
   {
