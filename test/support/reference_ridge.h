@@ -582,7 +582,7 @@ public:
       tree_(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(pts.size()),
             typename Tree::Splitter(), Traits(map_))
   {
-    tree_.build();
+    if(!pts.empty()) tree_.build(); // (CGAL's Kd_tree builds from one point at least)
   }
   bool empty() const { return pts_.empty(); }
   // indices of the k nearest points, nearest first
