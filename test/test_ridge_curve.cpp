@@ -492,6 +492,68 @@ TEST_CASE("convex polyhedra: no weak spur near a corner", "[ridge_curve]")
   }
 }
 
+// The cut locus ends only at vertices of positive curvature. A weak free end
+// (jump below the spur angle) exactly at an inner vertex whose curvature is
+// not positive (a saddle, or a flat vertex of a CAD face) is a false branch
+// or one that ran past its end: the spur pruning removes it and the weak
+// chain behind it, even near a corner. The code of 2026-12-06 (before this
+// rule) left 1-3 such ends from each of these sources of the box of fans and
+// 1-5 from bunny_1k's.
+TEST_CASE("spurs: no weak free end at a vertex without positive curvature", "[ridge_curve]")
+{
+  const Subdivided_polyhedron fans = make_fan_box(2, 1, 0.7, 4);
+  const std::vector<std::pair<std::string, Mesh> > meshes = {{"box of fans 2x1x0.7 n=4", fans.mesh},
+                                                            {"bunny_1k.off", load("bunny_1k.off")}};
+  for(const auto& [name, m] : meshes)
+  {
+    // curvature of the inner vertices, from the angle sums
+    std::vector<double> curvature(m.number_of_vertices(), 0);
+    for(auto v : m.vertices())
+    {
+      if(m.is_border(v)) { curvature[v] = 1; continue; } // (a border vertex ends the ridge on the border)
+      double sum = 0;
+      for(auto h : CGAL::halfedges_around_target(v, m))
+      {
+        const auto u = m.point(m.source(h)) - m.point(v), w = m.point(m.target(m.next(h))) - m.point(v);
+        sum += std::acos(std::max(-1.0, std::min(1.0, u * w / std::sqrt(u.squared_length() * w.squared_length()))));
+      }
+      curvature[v] = 2 * CGAL_PI - sum;
+    }
+    const std::size_t nv = m.number_of_vertices();
+    for(std::size_t k : {std::size_t(0), nv / 4, nv / 2, (3 * nv) / 4})
+    {
+      const vertex_descriptor s(static_cast<Mesh::size_type>(k));
+      std::ostringstream what;
+      what << name << " (" << m.number_of_faces() << " faces) source vertex " << s;
+      INFO(what.str());
+      const auto rc = run(m, s, Geodesic_ridge::default_tolerance, what.str());
+      if(!rc) continue;
+      std::map<std::array<double, 3>, int> ends;
+      std::vector<const Ridge_point*> end_points;
+      for(const auto& pl : rc->ridge_polylines())
+        if(!pl.empty()) { end_points.push_back(&pl.front()); end_points.push_back(&pl.back()); }
+      for(const Ridge_point* p : end_points) ++ends[{{p->point.x(), p->point.y(), p->point.z()}}];
+      std::size_t free_ends = 0, at_vertices = 0;
+      for(const Ridge_point* p : end_points)
+      {
+        if(ends[{{p->point.x(), p->point.y(), p->point.z()}}] != 1) continue;
+        ++free_ends;
+        Mesh::Halfedge_index h = m.halfedge(face_descriptor(static_cast<Mesh::size_type>(p->face)));
+        for(int i = 0; i < 3; ++i, h = m.next(h))
+          if(p->barycentric[i] == 1.0)
+          {
+            ++at_vertices;
+            const vertex_descriptor v = m.source(h);
+            INFO("free end at vertex " << v << " (" << p->point << "): jump " << p->angle << " degrees, curvature "
+                                       << curvature[v] * 180 / CGAL_PI << " degrees");
+            CHECK(!(p->angle < Geodesic_ridge::default_minimum_spur_angle && curvature[v] <= 1e-9));
+          }
+      }
+      std::cout << "[ridge_curve] " << what.str() << ": free ends " << free_ends << ", at vertices " << at_vertices << "\n";
+    }
+  }
+}
+
 // Genus g: one component and 2g independent cycles, from several sources.
 TEST_CASE("tori and higher genus: one component with 2g cycles", "[ridge_curve]")
 {

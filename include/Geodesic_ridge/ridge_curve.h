@@ -1570,6 +1570,16 @@ private:
     // edges). Measured (bench_ridge_accuracy, exact): real models' precision
     // p95 <= 0.25 on 47 -> 50 of 72 pairs, fandisk's median 0.44 -> 0.31.
     const double corner_end_angle = minimum_angle_ / 3;
+    // But a weak end exactly at a vertex of M without positive curvature (a
+    // saddle, or a flat vertex of a CAD model's face) ends where the cut locus
+    // cannot, whatever the curvature around it: the ridge drawn there is a
+    // false branch (or one that ran past its true end), and the whole chain
+    // of weak segments behind it goes, corner or not. Measured
+    // (bench_ridge_accuracy, exact): real models' precision p95 <= 0.5 on 70
+    // -> 72 of 72 pairs (fandisk v3237 0.34 -> 0.16, suzanne v0 0.58 -> 0.39),
+    // the CAD boxes 10 -> 16 of 24; a floor of 5 degrees of curvature instead
+    // of 0 lost a real branch of bunny_7k (recall 0.03 -> 5.9 mean edges).
+    std::vector<char> on_impossible_chain(nodes_.size(), 0);
     Curvature_near curvature_near(*this);
     std::vector<std::vector<std::size_t> > at(nodes_.size());
     std::vector<std::size_t> live(nodes_.size(), 0);
@@ -1591,10 +1601,12 @@ private:
       for(std::size_t i : at[v]) if(segments_[i].ridge) { seg = i; break; }
       if(seg == none) continue;
       const double curvature_here = curvature_near(v);
+      const bool impossible_end = on_impossible_chain[v] || at_vertex_without_curvature(v);
       // a weak end at a corner (curvature like that of a cube's) is a real
-      // leaf, unless its jump is too small for any corner's
+      // leaf, unless its jump is too small for any corner's or it lies where
+      // no cut locus ends
       const bool weak = segments_[seg].angle < minimum_angle_ &&
-                        (curvature_here < corner_curvature || segments_[seg].angle < corner_end_angle);
+                        (impossible_end || curvature_here < corner_curvature || segments_[seg].angle < corner_end_angle);
       const bool flat = !weak && curvature_here < minimum_curvature;
       const bool flat_end = flat && segments_[seg].angle < 3 * minimum_angle_;
       if(!weak && !flat_end) continue;
@@ -1602,8 +1614,29 @@ private:
       ++(weak ? st_.pruned_spur_segments : st_.pruned_flat_end_segments);
       --live[v];
       const std::size_t w = segments_[seg].a == v ? segments_[seg].b : segments_[seg].a;
+      if(weak && impossible_end) on_impossible_chain[w] = 1;
       if(--live[w] == 1 && node_loop_[w] == none) leaves.push_back(w);
     }
+  }
+
+  // Gaussian curvature of a vertex (by index) as `Corner_angles::curvature`;
+  // none on the border (its angle sum measures the border's turning)
+  double vertex_curvature(std::size_t v) const { return loop_of_vertex_[v] == none ? 2 * CGAL_PI - angle_sum_[v] : 0.0; }
+
+  // Whether a node lies exactly on an inner vertex of M whose curvature is not
+  // positive: a saddle, or a flat vertex (below 1e-9 radians: the rounding of
+  // a flat vertex's angle sum).
+  bool at_vertex_without_curvature(std::size_t node) const
+  {
+    const Ridge_point<Point>& p = nodes_[node];
+    const auto h = faces_.corner_halfedges(p.face);
+    for(int i = 0; i < 3; ++i)
+      if(p.barycentric[i] == 1.0) // (exact: a node at a vertex has λ = 1 there)
+      {
+        const std::size_t v = get(maps_.vim, source(h[i], tm_));
+        return loop_of_vertex_[v] == none && vertex_curvature(v) <= 1e-9;
+      }
+    return false;
   }
 
   // The total curvature of the vertices within 2.5 mean edges of a node (grown
@@ -1620,10 +1653,6 @@ private:
       for(vertex_descriptor v : vertices(a.tm_)) vertex_of[get(a.maps_.vim, v)] = v;
     }
 
-    // Gaussian curvature (as `Corner_angles::curvature`); none on the border
-    // (its angle sum measures the border's turning)
-    double curvature(std::size_t v) const { return a.loop_of_vertex_[v] == none ? 2 * CGAL_PI - a.angle_sum_[v] : 0.0; }
-
     double operator()(std::size_t node)
     {
       const double radius = 2.5 * a.mean_edge_;
@@ -1633,7 +1662,7 @@ private:
       for(const auto h : a.faces_.corner_halfedges(a.nodes_[node].face))
       {
         const std::size_t v = get(a.maps_.vim, source(h, a.tm_));
-        if(seen_at[v] != node) { seen_at[v] = node; stack.push_back(v); total += curvature(v); }
+        if(seen_at[v] != node) { seen_at[v] = node; stack.push_back(v); total += a.vertex_curvature(v); }
       }
       while(!stack.empty())
       {
@@ -1645,7 +1674,7 @@ private:
           if(seen_at[w] == node) continue;
           seen_at[w] = node;
           if(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(a.maps_.vpm, vertex_of[w]), p))) > radius) continue;
-          total += curvature(w);
+          total += a.vertex_curvature(w);
           stack.push_back(w);
         }
       }
