@@ -1193,13 +1193,19 @@ TEST_CASE("surfaces with a border: analytic cases", "[ridge_curve][border]")
         std::sort(off.begin(), off.end());
         return off.empty() ? 0 : off[std::size_t(0.95 * double(off.size() - 1))];
       };
-      // Both ridges keep a short false prong beside each of two bottom
-      // corners (2.1 mean edges, 5 % of the ridge's length, from the vertical
-      // edge two edges up to the bottom edge one edge from the corner); the
-      // cone ridge moves its points up to a tenth of an edge outwards: p95
-      // 0.24 against 0.15 (2026-12-05).
+      // Beside two of the bottom corners the ridge drew a short false prong
+      // (2.1 mean edges, from the vertical edge two edges up to the bottom
+      // edge one edge from the corner; p95 0.24 for the cone ridge, 0.15 for
+      // the linear one, 2026-12-05). Its end lies on a flat vertex of the
+      // bottom edge and its jumps are weak (0.5-11 degrees), so the exact
+      // pipeline now prunes it (no weak end at a vertex without positive
+      // curvature): p95 1e-14. What the prong stood in for is missing: the
+      // two lowest edges of those vertical edges, a branch inside one sheet
+      // of E (K reaches the corner along a wall's diagonal; the manual's
+      // Known Limits), so the farthest edge point is 0.70 mean edges from the
+      // ridge (0.5 before, reached by the prong). Fast marching keeps it.
       const double precision = precision_of(rc.polylines), reported = precision_of(rc.ridge_polylines());
-      if(exact) CHECK(reported <= 0.35);
+      if(exact) CHECK(reported <= 0.05);
       for(double x : {0.0, 1.0})
         for(double y : {0.0, 1.0})
           for(double z = 0.1; z < 0.95; z += 0.1)
@@ -1207,7 +1213,7 @@ TEST_CASE("surfaces with a border: analytic cases", "[ridge_curve][border]")
       std::cout << "[ridge_curve] open box" << (exact ? " exact" : " fmm") << ": ridge points p95 " << precision
                 << " (the ridge reported: " << reported << ") mean edges from the vertical edges, farthest edge point "
                 << recall << " from the ridge\n";
-      CHECK(recall <= 0.5);
+      CHECK(recall <= (exact ? 0.8 : 0.5));
       if(exact) CHECK(precision <= 0.25);
     }
   }
