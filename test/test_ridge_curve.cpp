@@ -449,6 +449,21 @@ TEST_CASE("convex polyhedra: the ridge reaches every corner", "[ridge_curve]")
   }
 }
 
+// The free ends of the ridge: the polylines' end points that end one polyline
+// only (a node shared by polylines is one Ridge_point, copied, so its 3D point
+// identifies it exactly).
+std::vector<const Ridge_point*> free_ends(const std::vector<std::vector<Ridge_point> >& polylines)
+{
+  std::vector<const Ridge_point*> end_points, result;
+  for(const auto& pl : polylines)
+    if(!pl.empty()) { end_points.push_back(&pl.front()); end_points.push_back(&pl.back()); }
+  std::map<std::array<double, 3>, int> ends;
+  for(const Ridge_point* p : end_points) ++ends[{{p->point.x(), p->point.y(), p->point.z()}}];
+  for(const Ridge_point* p : end_points)
+    if(ends[{{p->point.x(), p->point.y(), p->point.z()}}] == 1) result.push_back(p);
+  return result;
+}
+
 // A free end of the cut locus of a convex polyhedron is a corner, and the two
 // fronts meet there at about its angle deficit (90 degrees on a box). A weak
 // end near a corner is kept by the spur pruning (the corner rule) only with a
@@ -472,17 +487,10 @@ TEST_CASE("convex polyhedra: no weak spur near a corner", "[ridge_curve]")
     INFO(what.str());
     const auto rc = run(m, s, Geodesic_ridge::default_tolerance, what.str());
     if(!rc) continue;
-    // the polylines' end points; a free end is the end of one polyline only
-    std::vector<const Ridge_point*> end_points;
-    for(const auto& pl : rc->ridge_polylines())
-      if(!pl.empty()) { end_points.push_back(&pl.front()); end_points.push_back(&pl.back()); }
-    std::map<std::array<double, 3>, int> ends;
-    for(const Ridge_point* p : end_points) ++ends[{{p->point.x(), p->point.y(), p->point.z()}}];
-    std::size_t free_ends = 0, weak_off_corner = 0;
-    for(const Ridge_point* p : end_points)
+    const std::vector<const Ridge_point*> ends = free_ends(rc->ridge_polylines());
+    std::size_t weak_off_corner = 0;
+    for(const Ridge_point* p : ends)
     {
-      if(ends[{{p->point.x(), p->point.y(), p->point.z()}}] != 1) continue;
-      ++free_ends;
       double to_corner = std::numeric_limits<double>::infinity();
       for(vertex_descriptor c : poly.corner_vertices)
         to_corner = std::min(to_corner, std::sqrt(CGAL::squared_distance(p->point, m.point(c))) / h);
@@ -491,7 +499,7 @@ TEST_CASE("convex polyhedra: no weak spur near a corner", "[ridge_curve]")
       if(to_corner > 0.5 && p->angle < floor_angle) ++weak_off_corner;
       CHECK(!(to_corner > 0.5 && p->angle < floor_angle));
     }
-    std::cout << "[ridge_curve] " << what.str() << ": free ends " << free_ends << " (corners 8), weak ends off the corners "
+    std::cout << "[ridge_curve] " << what.str() << ": free ends " << ends.size() << " (corners 8), weak ends off the corners "
               << weak_off_corner << "\n";
   }
 }
@@ -510,19 +518,9 @@ TEST_CASE("spurs: no weak free end at a vertex without positive curvature", "[ri
                                                             {"bunny_1k.off", load("bunny_1k.off")}};
   for(const auto& [name, m] : meshes)
   {
-    // curvature of the inner vertices, from the angle sums
-    std::vector<double> curvature(m.number_of_vertices(), 0);
-    for(auto v : m.vertices())
-    {
-      if(m.is_border(v)) { curvature[v] = 1; continue; } // (a border vertex ends the ridge on the border)
-      double sum = 0;
-      for(auto h : CGAL::halfedges_around_target(v, m))
-      {
-        const auto u = m.point(m.source(h)) - m.point(v), w = m.point(m.target(m.next(h))) - m.point(v);
-        sum += std::acos(std::max(-1.0, std::min(1.0, u * w / std::sqrt(u.squared_length() * w.squared_length()))));
-      }
-      curvature[v] = 2 * CGAL_PI - sum;
-    }
+    // the curvature of the vertices, from the pipeline's own angle sums
+    const auto angles = Geodesic_ridge::internal::corner_angles(m, m.points(), get(CGAL::vertex_index, m),
+                                                                get(CGAL::face_index, m));
     const std::size_t nv = m.number_of_vertices();
     for(std::size_t k : {std::size_t(0), nv / 4, nv / 2, (3 * nv) / 4})
     {
@@ -532,28 +530,24 @@ TEST_CASE("spurs: no weak free end at a vertex without positive curvature", "[ri
       INFO(what.str());
       const auto rc = run(m, s, Geodesic_ridge::default_tolerance, what.str());
       if(!rc) continue;
-      std::map<std::array<double, 3>, int> ends;
-      std::vector<const Ridge_point*> end_points;
-      for(const auto& pl : rc->ridge_polylines())
-        if(!pl.empty()) { end_points.push_back(&pl.front()); end_points.push_back(&pl.back()); }
-      for(const Ridge_point* p : end_points) ++ends[{{p->point.x(), p->point.y(), p->point.z()}}];
-      std::size_t free_ends = 0, at_vertices = 0;
-      for(const Ridge_point* p : end_points)
+      const std::vector<const Ridge_point*> ends = free_ends(rc->ridge_polylines());
+      std::size_t at_vertices = 0;
+      for(const Ridge_point* p : ends)
       {
-        if(ends[{{p->point.x(), p->point.y(), p->point.z()}}] != 1) continue;
-        ++free_ends;
         Mesh::Halfedge_index h = m.halfedge(face_descriptor(static_cast<Mesh::size_type>(p->face)));
         for(int i = 0; i < 3; ++i, h = m.next(h))
           if(p->barycentric[i] == 1.0)
           {
             ++at_vertices;
             const vertex_descriptor v = m.source(h);
+            if(m.is_border(v)) continue; // (a border vertex ends the ridge on the border)
+            const double curvature = angles.curvature(std::size_t(v));
             INFO("free end at vertex " << v << " (" << p->point << "): jump " << p->angle << " degrees, curvature "
-                                       << curvature[v] * 180 / CGAL_PI << " degrees");
-            CHECK(!(p->angle < Geodesic_ridge::default_minimum_spur_angle && curvature[v] <= 1e-9));
+                                       << curvature * 180 / CGAL_PI << " degrees");
+            CHECK(!(p->angle < Geodesic_ridge::default_minimum_spur_angle && curvature <= 1e-9));
           }
       }
-      std::cout << "[ridge_curve] " << what.str() << ": free ends " << free_ends << ", at vertices " << at_vertices << "\n";
+      std::cout << "[ridge_curve] " << what.str() << ": free ends " << ends.size() << ", at vertices " << at_vertices << "\n";
     }
   }
 }
