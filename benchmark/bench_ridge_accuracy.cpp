@@ -100,14 +100,22 @@
 //  * ridge fronts: on every face that the ridge crosses, the winning copies'
 //    smallest value at each corner equals that corner's distance on M (the
 //    fronts that meet there are the exact ones), same tolerances.
+// 'read back' (issue 38): the ridge reported, and with cones the linear one
+// after ' / ', written as the program writes it and read back with no code of
+// the pipeline (test/support/written_ridge_topology.h: points within 1e-12 of
+// the diagonal are one point, border points joined to their loop): 'ok' when
+// it is connected with 2g + b independent cycles. With --no-reference only
+// this is measured (fast: no reference ridge).
 // Prints one row per (mesh, source, solver), then per solver the distribution
 // over the pairs (median, worst and where).
 #include "../test/support/analytic_meshes.h"
 #include "../test/support/reference_ridge.h"
+#include "../test/support/written_ridge_topology.h"
 
 #include "../test/support/extension_checks.h"
 #include "benchmark_meshes.h"
 
+#include <Geodesic_ridge/IO/polylines.h>
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 #include <Geodesic_ridge/connected_component.h>
@@ -186,7 +194,28 @@ struct Pair_result
   std::size_t paths_missing = 0; // fmm: vertices whose exact copy fast marching's E lacks
   double worst_excess = 0; // mean edges
   bool diagnosed = false;
+  // the written ridge read back (the reported one, and with cones the linear one too)
+  std::string topology;
+  bool topology_ok = true;
 };
+
+// The ridge written to a file as the program writes it, read back with no
+// code of the pipeline (test/support/written_ridge_topology.h): "ok" when it
+// is connected with 2g + b cycles, else what it has.
+template <class RidgePolylines>
+std::string read_back(const Mesh& mesh, const RidgePolylines& ridge, bool& ok)
+{
+  std::vector<std::vector<K::Point_3> > points;
+  Geodesic_ridge::ridge_polyline_points(ridge, std::back_inserter(points));
+  const fs::path file = fs::temp_directory_path() / "bench_ridge_accuracy_ridge.polylines.txt";
+  Geodesic_ridge::IO::write_polylines(file.string(), points);
+  const GT::Written_ridge_topology t = GT::written_ridge_topology(mesh, file.string());
+  fs::remove(file);
+  if(t.holds()) return "ok";
+  ok = false;
+  return std::to_string(t.components) + " comp. " + std::to_string(t.cycles) + " cyc. (2g+b " +
+         std::to_string(t.expected_cycles()) + ")";
+}
 
 // 'missing': with fast marching, against the larger E / the paths (its E solved exactly)
 std::string missing_column(std::size_t missing, std::size_t paths_missing, const std::string& solver)
@@ -313,8 +342,8 @@ int main(int argc, char** argv)
                  "distance.\n";
   std::cout << "\n| mesh | F | g | source | solver | prec. p95 (>= 30 deg) | prec. p95 (all) | prec. max | recall p95 "
                "| recall p95 @" << recall_tolerance << " | F(E)/F | rings | solves | outer winning | missing | worst excess "
-               "| front err. | time (s) |\n"
-               "|---|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+               "| front err. | read back | time (s) |\n"
+               "|---|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|\n";
 
   std::map<std::string, std::vector<Pair_result> > results;
   for(const std::string& file : files)
@@ -408,6 +437,8 @@ int main(int argc, char** argv)
           const auto t0 = std::chrono::steady_clock::now();
           const auto rc = run(tolerance);
           t_ridge = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          r.topology = read_back(mesh, measured(rc), r.topology_ok);
+          if(&measured(rc) != &rc.polylines) r.topology += " / " + read_back(mesh, rc.polylines, r.topology_ok);
           ratio = double(rc.statistics.extended_surface.number_of_faces) / double(mesh.number_of_faces());
           rings = rc.statistics.extended_surface.rings;
           solves = rc.statistics.solves;
@@ -475,12 +506,12 @@ int main(int argc, char** argv)
                         std::size_t(mesh.number_of_faces()), genus, r.source.c_str(), solver.c_str(), r.failure.c_str());
         else
           std::snprintf(line, sizeof line,
-                        "| %s | %zu | %ld | %s | %s | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | %d | %d | %zu | %s | %s | %s | %.3f |\n",
+                        "| %s | %zu | %ld | %s | %s | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f | %d | %d | %zu | %s | %s | %s | %s | %.3f |\n",
                         mesh_name.c_str(), std::size_t(mesh.number_of_faces()), genus, r.source.c_str(), solver.c_str(),
                         r.precision_major_p95, r.precision_all_p95, precision_max, r.recall_p95, r.recall_small_p95,
                         ratio, rings, solves, winning, diagnose ? missing_column(r.missing, r.paths_missing, solver).c_str() : "-",
                         diagnose ? std::to_string(r.worst_excess).substr(0, 6).c_str() : "-",
-                        diagnose ? std::to_string(r.ridge_front_errors).c_str() : "-", t_ridge);
+                        diagnose ? std::to_string(r.ridge_front_errors).c_str() : "-", r.topology.c_str(), t_ridge);
         std::cout << line << std::flush;
         results[solver].push_back(r);
       }
@@ -490,16 +521,19 @@ int main(int argc, char** argv)
   // distribution over the pairs, per solver
   std::cout << "\n| solver | pairs | failed | prec. p95 (>= 30 deg): median / worst (where) | <= 0.25 | <= 0.5 "
                "| prec. p95 (all): median / worst | <= 1 | recall p95 @small: median / worst (where) | <= 0.5 "
-               "| pairs missing exact copies |\n|---|---:|---:|---|---:|---:|---|---:|---|---:|---:|\n";
+               "| pairs missing exact copies | read back not connected with 2g + b cycles |\n"
+               "|---|---:|---:|---|---:|---:|---|---:|---|---:|---:|---:|\n";
   for(const auto& [solver, rs] : results)
   {
     std::vector<double> pm, pa, rs_small;
     std::size_t failed = 0, le025 = 0, le05 = 0, le1 = 0, rle05 = 0, with_missing = 0, paths_missing = 0;
+    std::size_t wrong_topology = 0;
     const Pair_result* worst_p = nullptr;
     const Pair_result* worst_r = nullptr;
     for(const auto& r : rs)
     {
       if(!r.failure.empty()) { ++failed; continue; }
+      wrong_topology += !r.topology_ok;
       pm.push_back(r.precision_major_p95);
       pa.push_back(r.precision_all_p95);
       rs_small.push_back(r.recall_small_p95);
@@ -515,13 +549,13 @@ int main(int argc, char** argv)
     const std::size_t n = pm.size();
     char line[1024];
     std::snprintf(line, sizeof line,
-                  "| %s | %zu | %zu | %.3f / %.3f (%s %s) | %zu | %zu | %.3f / %.3f | %zu | %.3f / %.3f (%s %s) | %zu | %s |\n",
+                  "| %s | %zu | %zu | %.3f / %.3f (%s %s) | %zu | %zu | %.3f / %.3f | %zu | %.3f / %.3f (%s %s) | %zu | %s | %zu |\n",
                   solver.c_str(), rs.size(), failed, quantile(pm, 0.5), n ? *std::max_element(pm.begin(), pm.end()) : 0.0,
                   worst_p ? worst_p->mesh.c_str() : "-", worst_p ? worst_p->source.c_str() : "-", le025, le05,
                   quantile(pa, 0.5), n ? *std::max_element(pa.begin(), pa.end()) : 0.0, le1, quantile(rs_small, 0.5),
                   n ? *std::max_element(rs_small.begin(), rs_small.end()) : 0.0, worst_r ? worst_r->mesh.c_str() : "-",
                   worst_r ? worst_r->source.c_str() : "-", rle05,
-                  diagnose ? missing_column(with_missing, paths_missing, solver).c_str() : "-");
+                  diagnose ? missing_column(with_missing, paths_missing, solver).c_str() : "-", wrong_topology);
     std::cout << line;
   }
   return 0;

@@ -15,7 +15,9 @@
 // Connectivity and cycles are recomputed here from the output polylines, not
 // read from the statistics.
 #include "support/analytic_meshes.h"
+#include "support/written_ridge_topology.h"
 
+#include <Geodesic_ridge/IO/polylines.h>
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 #include <Geodesic_ridge/solvers/Dijkstra_solver.h>
@@ -30,6 +32,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -39,6 +42,8 @@
 #include <string>
 #include <tuple>
 #include <vector>
+
+#include <unistd.h>
 
 namespace {
 
@@ -615,6 +620,65 @@ TEST_CASE("tolerance sweep: connected ridge with 2g cycles", "[ridge_curve]")
   }
 }
 
+// The ridge as the surface sees it (issue 38): written as a user writes it
+// (`IO::write_polylines`, a file), read back with no code of the pipeline
+// (test/support/written_ridge_topology.h: points within 1e-12 of the
+// diagonal are one, border points joined to their loop), it is connected with
+// cycle rank 2g + b, for both ridges and the solvers exact, vtp and fmm. Before
+// one node per surface point (internal/coincident_points.h), 13 of 96 runs
+// of these meshes (sources i V / 8) had 1 to 3 cycles read back that the
+// library's graph did not have: one point computed from two faces, or an
+// envelope edge ending 1e-12 from a vertex, written twice with different
+// rounding (armadillo_2k v216, v324, v540; teddy_3k v599, v1198 below).
+TEST_CASE("the written ridge, read back as geometry, is connected with 2g + b cycles", "[ridge_curve][topology]")
+{
+  namespace p = Geodesic_ridge::parameters;
+  namespace fs = std::filesystem;
+#ifdef GEODESIC_RIDGE_SANITIZE
+  const std::vector<std::string> names = {"armadillo_2k.off", "torus_1k.off", "boundary/open_box.off"};
+  const std::vector<std::size_t> eighths = {2, 5};
+#else
+  const std::vector<std::string> names = {"bunny_1k.off",  "armadillo_2k.off", "teddy_3k.off",
+                                          "torus_1k.off",  "eight.off",        "knot_3k.off",
+                                          "3holes_7k.off", "boundary/open_box.off", "boundary/flat_annulus.off"};
+  const std::vector<std::size_t> eighths = {2, 3, 5, 6};
+#endif
+  const fs::path file = fs::temp_directory_path() / ("geodesic_ridge_topology_" + std::to_string(::getpid()) + ".txt");
+  std::size_t runs = 0, merged = 0;
+  for(const std::string& name : names)
+  {
+    const Mesh m = load(name);
+    for(std::size_t i : eighths)
+    {
+      const vertex_descriptor s(static_cast<Mesh::size_type>(i * m.number_of_vertices() / 8));
+      auto check = [&](const std::vector<std::vector<Ridge_point> >& ridge, const std::string& what) {
+        INFO(name << " source vertex " << std::size_t(s) << ", " << what);
+        std::vector<std::vector<Point_3> > points;
+        Geodesic_ridge::ridge_polyline_points(ridge, std::back_inserter(points));
+        Geodesic_ridge::IO::write_polylines(file.string(), points);
+        const Written_ridge_topology t = written_ridge_topology(m, file.string());
+        INFO(t.points << " points (" << t.merged_points << " merged), " << t.segments << " segments, "
+                      << t.components << " components, " << t.cycles << " cycles, genus " << t.genus << ", "
+                      << t.border_loops << " border loops");
+        CHECK(t.components == 1);
+        CHECK(t.cycles == t.expected_cycles());
+        ++runs;
+        merged += t.merged_points;
+      };
+      const Result exact = Geodesic_ridge::compute_ridge_curve(m, s);
+      check(exact.polylines, "exact, linear ridge");
+      check(exact.ridge_polylines(), "exact, cone ridge");
+      check(Geodesic_ridge::compute_ridge_curve(m, s, p::solver(Geodesic_ridge::Window_propagation_solver())).ridge_polylines(),
+            "vtp");
+      check(Geodesic_ridge::compute_ridge_curve(m, s, p::solver(Geodesic_ridge::Fast_marching_solver())).ridge_polylines(),
+            "fmm");
+    }
+  }
+  fs::remove(file);
+  std::cout << "[ridge_curve] written ridges read back: " << runs << " runs, " << merged
+            << " written points merged with another (a point that ends two polylines is written twice)\n";
+}
+
 // Sources given as Face_locations: inside a face and on an edge. On the doubly
 // covered square the oracle applies to any top-sheet point, so the ridge is
 // also compared with the analytic cut locus (same radii as above).
@@ -1076,7 +1140,11 @@ TEST_CASE("surfaces with a border: the ridge with the border is connected, with 
 // diagonal around vertices 300 and 800): 4 of 171 sources (every fifth
 // vertex) failed the topology check before the pieces were joined
 // (join_border_components); bench_ridge_accuracy measured joined ridges at
-// precision p95 0.19-0.26 mean edges, as the others'.
+// precision p95 0.19-0.26 mean edges, as the others'. Since one node per
+// surface point (issue 38: those points a hair apart are one node, and an
+// edge piece between them joins no regions) none of these sources needs the
+// join any more (0 of 7, 2026-12-06); the pass stays for the cases it was
+// not measured on, and this test for the topology.
 TEST_CASE("surfaces with several border loops: the pieces hanging from different loops are joined", "[ridge_curve][border]")
 {
   const Mesh m = with_holes("armadillo_2k.off", {300, 800}, 0.04);
@@ -1101,7 +1169,6 @@ TEST_CASE("surfaces with several border loops: the pieces hanging from different
     }
   std::cout << "[ridge_curve] armadillo_2k with two holes: " << joined_sources << " of " << sources
             << " sources needed their pieces joined\n";
-  CHECK(joined_sources > 0); // the case this test is about occurs
 }
 
 // The analytic cases with a border (test/support/analytic_meshes.h): flat
@@ -1147,6 +1214,33 @@ TEST_CASE("surfaces with a border: analytic cases", "[ridge_curve][border]")
                   << length / mean_edge_length(c->mesh) << " mean edges (the exact ridge is empty)\n";
         if(exact) CHECK(rc.ridge_polylines().empty());
       }
+
+  // A slit in the border (issue 38): paths bend around its end, whose linear
+  // fields jump by 66 degrees across the edges there; that was a one-edge
+  // ridge from 9 of 60 sources. The exact ridge is empty from every source.
+  {
+    const Flat_slit_square slit = make_flat_slit_square(16, 0.002);
+#ifdef GEODESIC_RIDGE_SANITIZE
+    const std::size_t step = 23;
+#else
+    const std::size_t step = 5;
+#endif
+    std::size_t nonempty = 0, runs = 0;
+    for(std::size_t v = 0; v < slit.mesh.number_of_vertices(); v += step)
+      for(const std::string solver : {"exact", "vtp"})
+      {
+        INFO(slit.name << " source " << v << " " << solver);
+        const vertex_descriptor s(static_cast<Mesh::size_type>(v));
+        const Result rc = solver == "exact" ? Geodesic_ridge::compute_ridge_curve(slit.mesh, s)
+                                            : Geodesic_ridge::compute_ridge_curve(
+                                                  slit.mesh, s, p::solver(Geodesic_ridge::Window_propagation_solver()));
+        check_topology(slit, rc);
+        CHECK(rc.ridge_polylines().empty());
+        nonempty += !rc.ridge_polylines().empty();
+        ++runs;
+      }
+    std::cout << "[ridge_curve] flat square with a slit: " << nonempty << " of " << runs << " ridges not empty\n";
+  }
 
   const Flat_annulus annulus = make_flat_annulus(24, 1, 3, 0.2, seed);
   const double h = mean_edge_length(annulus.mesh);

@@ -31,6 +31,7 @@
 #ifndef GEODESIC_RIDGE_CONE_RIDGE_H
 #define GEODESIC_RIDGE_CONE_RIDGE_H
 
+#include <Geodesic_ridge/internal/coincident_points.h>
 #include <Geodesic_ridge/internal/faces_by_index.h>
 #include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/lower_envelope.h>
@@ -625,8 +626,8 @@ private:
 
 // The components and independent cycles of the graph of `polylines` with the
 // border loops of `tm` as nodes (a point on a border edge or at a border
-// vertex is joined to its loop); points are told apart by face, coordinates
-// and point.
+// vertex is joined to its loop); points within `coincident_tolerance` of one
+// another are one node, as a reader of the written polylines sees them.
 template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap, class Point>
 std::pair<std::size_t, std::size_t> ridge_graph_with_border(const TriangleMesh& tm, VertexPointMap vpm,
                                                             VertexIndexMap vim, FaceIndexMap fim,
@@ -643,29 +644,31 @@ std::pair<std::size_t, std::size_t> ridge_graph_with_border(const TriangleMesh& 
       loops.unite(a, b);
     }
   // nodes: the loops' roots (by vertex index), then the ridge points
-  std::map<std::tuple<std::size_t, double, double, double, double, double, double>, std::size_t> id;
+  CGAL::Bbox_3 box;
+  for(auto v : vertices(tm)) box += get(vpm, v).bbox();
+  Coincident_points id(coincident_tolerance(box));
+  std::size_t points = 0;
   const std::size_t first_point = num_vertices(tm);
   std::vector<std::pair<std::size_t, std::size_t> > edges;
+  std::set<std::pair<std::size_t, std::size_t> > border_links; // (a point seen twice is linked once)
   auto node = [&](const Ridge_point<Point>& p) {
-    const auto [it, added] = id.emplace(std::make_tuple(p.face, p.barycentric[0], p.barycentric[1], p.barycentric[2],
-                                                        CGAL::to_double(p.point.x()), CGAL::to_double(p.point.y()),
-                                                        CGAL::to_double(p.point.z())),
-                                        first_point + id.size());
-    if(added)
+    const std::array<double, 3> xyz = {{CGAL::to_double(p.point.x()), CGAL::to_double(p.point.y()),
+                                        CGAL::to_double(p.point.z())}};
+    const std::size_t same = id.find(xyz);
+    const std::size_t n = same != Coincident_points::none ? same : first_point + points++;
+    if(same == Coincident_points::none) id.insert(n, xyz);
+    const auto h = faces.corner_halfedges(p.face);
+    for(int k = 0; k < 3; ++k)
     {
-      const auto h = faces.corner_halfedges(p.face);
-      for(int k = 0; k < 3; ++k)
+      const std::size_t v = get(vim, source(h[k], tm));
+      if((p.barycentric[k] == 1 && on_border[v]) ||
+         (p.barycentric[(k + 2) % 3] == 0 && is_border(opposite(h[k], tm), tm)))
       {
-        const std::size_t v = get(vim, source(h[k], tm));
-        if((p.barycentric[k] == 1 && on_border[v]) ||
-           (p.barycentric[(k + 2) % 3] == 0 && is_border(opposite(h[k], tm), tm)))
-        {
-          edges.emplace_back(it->second, loops.find(v));
-          break;
-        }
+        border_links.emplace(n, loops.find(v));
+        break;
       }
     }
-    return it->second;
+    return n;
   };
   for(const auto& pl : polylines)
     for(std::size_t i = 0; i + 1 < pl.size(); ++i)
@@ -673,9 +676,10 @@ std::pair<std::size_t, std::size_t> ridge_graph_with_border(const TriangleMesh& 
       const std::size_t a = node(pl[i]), b = node(pl[i + 1]);
       if(a != b) edges.emplace_back(a, b);
     }
-  Union_find graph(first_point + id.size());
+  edges.insert(edges.end(), border_links.begin(), border_links.end());
+  Union_find graph(first_point + points);
   std::set<std::size_t> nodes;
-  for(const auto& [p, i] : id) nodes.insert(i);
+  for(std::size_t i = 0; i < points; ++i) nodes.insert(first_point + i);
   for(const auto& e : edges)
   {
     nodes.insert(e.second);

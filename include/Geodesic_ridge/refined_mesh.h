@@ -18,6 +18,7 @@
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 #include <Geodesic_ridge/distance_field.h>
 #include <Geodesic_ridge/lower_envelope.h>
+#include <Geodesic_ridge/internal/coincident_points.h>
 #include <Geodesic_ridge/internal/faces_by_index.h>
 #include <Geodesic_ridge/parameters.h>
 
@@ -157,7 +158,7 @@ public:
                 ConstrainedMap constrained_out, Visitor visitor)
     : tm_(tm), maps_(maps), ridge_(ridge), out_(out), field_(field), vpm_out_(vpm_out), distance_out_(distance_out),
       constrained_out_(constrained_out), visitor_(visitor), faces_(tm, maps.vpm, maps.fim), nf_(num_faces(tm)),
-      vertex_of_mesh_vertex_(num_vertices(tm), OGT::null_vertex())
+      vertex_of_mesh_vertex_(num_vertices(tm), OGT::null_vertex()), near_(coincident_tolerance(bounding_box()))
   {}
 
   Refined_mesh_statistics run()
@@ -239,10 +240,19 @@ private:
     return false;
   }
 
+  CGAL::Bbox_3 bounding_box() const
+  {
+    CGAL::Bbox_3 box;
+    for(auto v : vertices(tm_)) box += get(maps_.vpm, v).bbox();
+    return box;
+  }
+
   out_vertex new_vertex(const Point& p)
   {
     const out_vertex v = add_vertex(out_);
     put(vpm_out_, v, p);
+    near_.insert(out_vertices_.size(), xyz(p));
+    out_vertices_.push_back(v);
     value_range_.emplace(v, std::make_pair(std::numeric_limits<double>::infinity(),
                                            -std::numeric_limits<double>::infinity()));
     return v;
@@ -381,11 +391,27 @@ private:
     }
   }
 
-  // the output vertices at a ridge point (rounded coordinates): one, or
-  // several where the two faces of an edge put exact points on it that differ
-  // below the rounding (the fields of copies split at a kink need not agree
-  // along their edges)
+  static std::array<double, 3> xyz(const Point& p)
+  {
+    return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  }
+
+  // the output vertices at a ridge point: those at its rounded coordinates
+  // (one, or several where the two faces of an edge put exact points on it
+  // that differ below the rounding: the fields of copies split at a kink need
+  // not agree along their edges), and those within the coincidence tolerance
+  // of it (one ridge node stands for the exact points of the cells it joins
+  // that are one surface point: internal/coincident_points.h)
   std::vector<out_vertex> rounded_vertices(const Ridge_point<Point>& p) const
+  {
+    std::vector<out_vertex> out = vertices_at(p);
+    near_.for_each_near(xyz(p.point), [&](std::size_t i) {
+      if(std::find(out.begin(), out.end(), out_vertices_[i]) == out.end()) out.push_back(out_vertices_[i]);
+      return false;
+    });
+    return out;
+  }
+  std::vector<out_vertex> vertices_at(const Ridge_point<Point>& p) const
   {
     const auto& l = p.barycentric;
     const int feature = feature_of(l);
@@ -464,6 +490,8 @@ private:
   std::vector<out_vertex> vertex_of_mesh_vertex_;
   std::map<Exact_point_key, out_vertex> vertex_of_point_;
   std::multimap<Rounded_point_key, out_vertex> vertex_of_rounded_; // to find the ridge's points
+  Coincident_points near_;                 // the output vertices' points (by creation order),
+  std::vector<out_vertex> out_vertices_;   // to find those that one ridge node stands for
   std::map<out_vertex, std::pair<double, double> > value_range_; // smallest and largest value given
   std::map<std::pair<out_vertex, out_vertex>, std::vector<out_vertex> > chain_of_side_; // sides that got points
 };

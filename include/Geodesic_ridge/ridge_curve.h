@@ -15,6 +15,7 @@
 #define GEODESIC_RIDGE_RIDGE_CURVE_H
 
 #include <Geodesic_ridge/extended_surface.h>
+#include <Geodesic_ridge/internal/coincident_points.h>
 #include <Geodesic_ridge/internal/corner_angles.h>
 #include <Geodesic_ridge/internal/graph_polylines.h>
 #include <Geodesic_ridge/internal/union_find.h>
@@ -112,6 +113,9 @@ struct Ridge_curve_statistics
   std::size_t recombined_copies = 0;      ///< copies split into the fronts of nearer copies they recombine
   std::size_t pruned_spur_segments = 0;   ///< free-end segments with a gradient jump below the minimum angle
   std::size_t pruned_flat_end_segments = 0; ///< free-end segments with no positive curvature near their end
+  /// ridge points computed again (from another face, or a few units of
+  /// rounding from a vertex or an edge) that are one node of the ridge
+  std::size_t coincident_points = 0;
   /// \name The Ridge
   //@{
   /// The ridge's segments, junctions (points where three or more regions
@@ -663,7 +667,8 @@ public:
                         const Copy_cones* cones = nullptr)
     : tm_(tm), maps_(maps), E_(E), face_copies_(face_copies), mean_edge_(mean_edge), minimum_angle_(minimum_angle),
       kink_angle_(kink_angle), angle_sum_(angle_sum), regions_(regions), st_(st), faces_(tm, maps.vpm, maps.fim),
-      nf_(num_faces(tm)), same_front_tolerance_(1e-6 * mean_edge), cones_(cones)
+      nf_(num_faces(tm)), same_front_tolerance_(1e-6 * mean_edge), cones_(cones),
+      coincident_(coincident_tolerance(bounding_box(tm, maps.vpm)))
   {}
 
   void run(std::vector<std::vector<Ridge_point<Point> > >& polylines)
@@ -781,19 +786,62 @@ private:
     return none;
   }
 
+  // The node of a point: one per surface point. A point within the
+  // coincidence tolerance of a node (the same point computed from another
+  // face, or an envelope edge that ends 1e-12 from a vertex) is that node; the
+  // node then takes the point's location if it is on a lower feature (a
+  // vertex, then an edge), so that nodes at vertices are exactly there.
   std::size_t add_node(const Key& key, std::size_t f, const std::array<Q, 3>& lambda, std::size_t loop = none)
   {
     auto it = node_of_.find(key);
     if(it != node_of_.end()) return it->second;
-    node_loop_.push_back(loop);
     Ridge_point<Point> p;
     p.face = f;
     p.barycentric = {{CGAL::to_double(lambda[0]), CGAL::to_double(lambda[1]), CGAL::to_double(lambda[2])}};
     const auto cp = faces_.corner_points(f);
     p.point = barycentric_to_point(lambda, cp[0], cp[1], cp[2]);
+    const std::array<double, 3> xyz = {{CGAL::to_double(p.point.x()), CGAL::to_double(p.point.y()),
+                                        CGAL::to_double(p.point.z())}};
+    const std::size_t same = coincident_.find(xyz, [&](std::size_t n) { return faces_share_a_vertex(nodes_[n].face, f); });
+    if(same != Coincident_points::none)
+    {
+      if(feature_dimension(std::get<0>(key)) < node_feature_[same])
+      {
+        nodes_[same] = p;
+        node_feature_[same] = feature_dimension(std::get<0>(key));
+        coincident_.insert(same, xyz);
+      }
+      if(node_loop_[same] == none) node_loop_[same] = loop;
+      ++st_.coincident_points;
+      node_of_.emplace(key, same);
+      return same;
+    }
+    node_loop_.push_back(loop);
+    node_feature_.push_back(feature_dimension(std::get<0>(key)));
     nodes_.push_back(p);
+    coincident_.insert(nodes_.size() - 1, xyz);
     node_of_.emplace(key, nodes_.size() - 1);
     return nodes_.size() - 1;
+  }
+  // (points of two sheets of a surface that touches itself may coincide in space)
+  bool faces_share_a_vertex(std::size_t f, std::size_t g) const
+  {
+    if(f == g) return true;
+    const auto hf = faces_.corner_halfedges(f), hg = faces_.corner_halfedges(g);
+    for(const auto& a : hf)
+      for(const auto& b : hg)
+        if(source(a, tm_) == source(b, tm_)) return true;
+    return false;
+  }
+  // a key's kind is the dimension of the feature it lies on: 0 vertex, 1 edge, 2 face
+  static int feature_dimension(int kind) { return kind; }
+
+  template <class VPM>
+  static CGAL::Bbox_3 bounding_box(const TriangleMesh& tm, VPM vpm)
+  {
+    CGAL::Bbox_3 box;
+    for(vertex_descriptor v : vertices(tm)) box += get(vpm, v).bbox();
+    return box;
   }
 
   // The loops of the border of M (b of them): per vertex its loop, or none
@@ -859,10 +907,12 @@ private:
       for(const auto& s : envelope_of_[f]->segments)
       {
         const std::size_t ca = cell_of(f, s.copy_a), cb = cell_of(f, s.copy_b);
+        const std::size_t a = node_at(f, s.endpoints[0]), b = node_at(f, s.endpoints[1]);
+        // (a boundary of length 0, one surface point, joins no regions and is no ridge)
+        if(a == b) continue;
         if(same_field(cells_[ca].field, cells_[cb].field)) { fronts_.unite(ca, cb); continue; }
         const Gradient_jump j = front_jump_in_face(f, ca, cb, s.endpoints);
-        segments_.push_back(
-            Segment{node_at(f, s.endpoints[0]), node_at(f, s.endpoints[1]), ca, cb, j.strength, j.angle, true});
+        segments_.push_back(Segment{a, b, ca, cb, j.strength, j.angle, true});
         ++st_.envelope_segments;
       }
     }
@@ -1001,6 +1051,26 @@ private:
   // the kink shows the ridge there.
   bool kinked(const Gradient_jump& j) const { return kink_angle_ > 0 && j.angle >= kink_angle_; }
 
+  // A kink along edge k of face f, inside one sheet: none at a reflex vertex
+  // of the border (angle sum above pi). Shortest paths bend around it, and
+  // in its shadow the distance is a cone with its apex there, which the
+  // linear fields of the faces at it interpolate as badly as the source's
+  // cone: a flat square with a slit in its border (simply connected and flat,
+  // so no cut locus) got a one-edge ridge at the slit's end, a linear jump of
+  // 66 degrees (issue 38). A generic cut locus meets the border away from its
+  // reflex vertices.
+  bool kinked_along(std::size_t f, int k, const Gradient_jump& j) const
+  {
+    if(!kinked(j)) return false;
+    const auto h = faces_.corner_halfedges(f);
+    for(const auto v : {source(h[k], tm_), target(h[k], tm_)})
+    {
+      const std::size_t i = get(maps_.vim, v);
+      if(loop_of_vertex_[i] != none && angle_sum_[i] > CGAL_PI) return false;
+    }
+    return true;
+  }
+
   // Thin faces: height over the longest edge below `thin_face_ratio` of that
   // edge (caps, three corners nearly on a line, and needles). A linear field
   // interpolates the distance along the long edge from its two ends only, and
@@ -1060,7 +1130,7 @@ private:
     if(envelope_of_[f1]->cells.size() != 1 || envelope_of_[f2]->cells.size() != 1) return false;
     const std::size_t c1 = first_cell_[f1], c2 = first_cell_[f2];
     if(!glued_across(c1, k1, c2) || cells_[c1].split || cells_[c2].split ||
-       kinked(edge_jump(f1, k1, c1, f2, k2, c2)))
+       kinked_along(f1, k1, edge_jump(f1, k1, c1, f2, k2, c2)))
       return false;
     fronts_.unite(c1, c2);
     return true;
@@ -1132,9 +1202,11 @@ private:
   {
     for(const Edge_piece& p : edge_pieces(f1, k1, f2, k2))
     {
+      const auto [a, b] = piece_nodes(f1, k1, p);
+      if(a == b) continue; // (one surface point: joins no regions, no ridge)
       // a front of a split copy is one front with a glued copy only where their fields agree
       const bool glued =
-          glued_across(p.c1, k1, p.c2) && !kinked(p.jump) && !cells_[p.c1].split && !cells_[p.c2].split;
+          glued_across(p.c1, k1, p.c2) && !kinked_along(f1, k1, p.jump) && !cells_[p.c1].split && !cells_[p.c2].split;
       const bool thin = thin_[f1] || thin_[f2];
       if(glued || one_front_along(p.c1, k1, p.c2, k2, p.ta, p.tb, p.jump, thin))
       {
@@ -1143,7 +1215,6 @@ private:
         fronts_.unite(p.c1, p.c2);
         continue;
       }
-      const auto [a, b] = piece_nodes(f1, k1, p);
       const Gradient_jump j = front_jump_across(f1, k1, f2, k2, p);
       segments_.push_back(Segment{a, b, p.c1, p.c2, j.strength, j.angle, true});
       ++st_.edge_segments;
@@ -1509,9 +1580,10 @@ private:
       for(const auto& s : envelope_of_[f]->segments)
       {
         const std::size_t ca = cell_of(f, s.copy_a), cb = cell_of(f, s.copy_b);
+        const std::size_t a = node_at(f, s.endpoints[0]), b = node_at(f, s.endpoints[1]);
+        if(a == b) continue;
         const Gradient_jump j = gradient_jump_in_face(cells_[ca], cells_[cb]);
-        links.push_back(
-            Segment{node_at(f, s.endpoints[0]), node_at(f, s.endpoints[1]), ca, cb, j.strength, j.angle, false});
+        links.push_back(Segment{a, b, ca, cb, j.strength, j.angle, false});
       }
     }
     std::vector<char> edge_done(num_edges(tm_), 0);
@@ -1532,7 +1604,7 @@ private:
         for(const Edge_piece& p : edge_pieces(f1, k1, f2, k2))
         {
           const auto [a, b] = piece_nodes(f1, k1, p);
-          links.push_back(Segment{a, b, p.c1, p.c2, p.jump.strength, p.jump.angle, false});
+          if(a != b) links.push_back(Segment{a, b, p.c1, p.c2, p.jump.strength, p.jump.angle, false});
         }
       }
     }
@@ -1781,6 +1853,10 @@ private:
   // the border: per vertex of M its loop (or none), per node its loop (or none)
   std::vector<std::size_t> loop_of_vertex_, node_loop_;
   std::size_t number_of_loops_ = 0;
+  // one node per surface point: the nodes' points, and per node the
+  // dimension of the feature its location is on (0 vertex, 1 edge, 2 face)
+  Coincident_points coincident_;
+  std::vector<int> node_feature_;
 };
 
 template <class TriangleMesh, class Point, class Maps>

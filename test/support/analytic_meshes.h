@@ -22,7 +22,7 @@
 // * Surfaces WITH BOUNDARY (issue 13; all derive from `Surface_with_boundary`,
 //   which holds the boundary loop count b, the genus g and the cycle rank
 //   2g + b of ridge + boundary):
-//   `make_flat_square()`, `make_flat_L_domain()`, `make_half_cylinder()`
+//   `make_flat_square()`, `make_flat_L_domain()`, `make_flat_slit_square()`, `make_half_cylinder()`
 //   (flat and simply connected: the ridge is empty for every source, boundary
 //   sources included), `make_flat_annulus()` (the ridge is one arc from the
 //   hole to the outer boundary, given exactly by `Flat_annulus_ridge`),
@@ -880,6 +880,57 @@ inline Flat_L_domain make_flat_L_domain(int n, double perturbation = 0, unsigned
   for(std::size_t k : index)
     s.grid.push_back(k == std::numeric_limits<std::size_t>::max() ? Mesh::null_vertex() : Mesh::Vertex_index(Mesh::size_type(k)));
   s.reflex_corner = s.grid[std::size_t(n + w * n)];
+  return s;
+}
+
+// --- flat square with a slit
+
+/// The unit square at z = 0 with a slit in its border: from the middle of
+/// the bottom side, (1/2, 0), up to (1/2, 1/2), `width` wide (its two sides
+/// at x = 1/2 -+ width / 2, meeting at the slit's end (1/2, 1/2), a reflex
+/// corner of angle nearly 2 pi). b = 1, g = 0, rank 1. Simply connected and
+/// flat, so shortest paths are unique (they bend at the slit's end) and the
+/// ridge is empty for every source.
+struct Flat_slit_square : Surface_with_boundary
+{
+  Mesh::Vertex_index slit_end; ///< at (1/2, 1/2)
+};
+
+/// The n x n grid of the unit square (n even, >= 4), cells split as
+/// make_flat_square() does, cut open along the slit (0 < width < 1/n): the
+/// grid points (n/2, j) for j < n/2 come twice, one per side of the slit.
+inline Flat_slit_square make_flat_slit_square(int n, double width)
+{
+  namespace BI = boundary_internal;
+  if(n < 4 || n % 2 != 0) throw std::invalid_argument("make_flat_slit_square: n even, >= 4");
+  if(!(width > 0 && width < 1.0 / n)) throw std::invalid_argument("make_flat_slit_square: width in (0, 1/n)");
+  Flat_slit_square s;
+  BI::set_common(s, "flat square with a slit", n, 0, 0, 1, 0, true);
+  std::vector<Point_3> points;
+  auto on_slit = [n](int i, int j) { return i == n / 2 && j < n / 2; };
+  std::vector<std::size_t> left((n + 1) * (n + 1)), right((n + 1) * (n + 1));
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+    {
+      const std::size_t k = std::size_t(i + (n + 1) * j);
+      left[k] = right[k] = points.size();
+      if(!on_slit(i, j)) { points.emplace_back(double(i) / n, double(j) / n, 0.0); continue; }
+      points.emplace_back(0.5 - width / 2, double(j) / n, 0.0);
+      right[k] = points.size();
+      points.emplace_back(0.5 + width / 2, double(j) / n, 0.0);
+    }
+  // a cell left of the slit takes the points of its left side, a cell right of it the right side's
+  std::vector<BI::Triangle> tris;
+  for(const bool west : {true, false})
+  {
+    auto id = [&](int i, int j) { return (west ? left : right)[std::size_t(i + (n + 1) * j)]; };
+    auto corner = [n](int i, int j) { return (i == 0 || i == n) && (j == 0 || j == n); };
+    const auto half = BI::grid_triangles(n, n, id, BI::corner_diagonal(corner),
+                                         [&](int i, int) { return (i < n / 2) == west; });
+    tris.insert(tris.end(), half.begin(), half.end());
+  }
+  s.mesh = mesh_from_soup(points, tris);
+  s.slit_end = nearest_vertex(s.mesh, Point_3(0.5, 0.5, 0));
   return s;
 }
 
