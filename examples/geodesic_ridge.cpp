@@ -21,6 +21,13 @@
 // line, 3 internal error. Every error is one line on stderr; so is every note
 // (polygons triangulated, each kind of repair).
 //
+// With --sources, a file that does not parse is refused before any work; a
+// source that fails (out of range, off its face, or an error while computing
+// it) leaves DIR/ridge_k.error.txt and the others go on; DIR/summary.json lists
+// every source's status, time and files; the exit status is 1 if any failed.
+// Every output file is written beside its target and renamed onto it: whole,
+// or not there at all.
+//
 // Indices in and out are the file's, whatever the triangulation of polygons
 // and the repair changed (Geodesic_ridge::File_index_map).
 //
@@ -52,6 +59,7 @@
 #include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cerrno>
 #include <cmath>
@@ -110,7 +118,8 @@ const char* synopsis =
     "  file face, in file order: for a polygon, those of the point in the triangle of it that holds the\n"
     "  point, 0 for its other vertices.\n"
     "  A mesh in several parts: the ridge is that of the source's connected component; the others are\n"
-    "  unreachable (a note on stderr): 'inf' in --query-out, distance -1 in --refined, grey in --png.\n\n";
+    "  unreachable (a note on stderr): 'inf' in --query-out, distance -1 in --refined, grey in --png.\n"
+    "  Every output file is written beside its target, then renamed onto it: it is whole or not there.\n\n";
 
 std::size_t parse_index(const std::string& what, const std::string& s)
 {
@@ -242,10 +251,13 @@ po::options_description describe()
      "corner's front from a sample next to it (parameters::corner_fallback(false): fewer branches found at small "
      "tolerances)")
     ("sources", text("FILE"), "many sources instead of one, one per line: 'V' (a vertex) or 'FACE X Y Z' (a point of "
-                              "the face); '#' starts a comment. With --out-dir; in parallel when built with TBB")
+                              "the face); '#' starts a comment; a line that does not parse refuses the file. With "
+                              "--out-dir; in parallel when built with TBB")
     ("out-dir", text("DIR"), "with --sources: for the k-th source (0-based) DIR/ridge_k.polylines.txt and "
-                             "DIR/ridge_k.json (its source, counts and timings); a progress line on stderr when it is "
-                             "a terminal")
+                             "DIR/ridge_k.json (its source, counts and timings), or, if it fails (out of range, off its "
+                             "face, an error while computing it), DIR/ridge_k.error.txt (its message; the others go on, "
+                             "the exit status is 1); DIR/summary.json: every source's status, time and files; a "
+                             "progress line on stderr when it is a terminal")
     ("rough-cut", text("OUT"), "write the rough cut locus K (stage 1) as CGAL polylines")
     ("stats", text("OUT.json"), "write counts, timings and parameters as JSON")
     ("png", text("OUT.png"), "picture: the mesh from two opposite sides coloured by the distance (viridis, dark "
@@ -478,13 +490,13 @@ Location read_query(const std::vector<std::string>& t, const Mesh& mesh, const F
 }
 
 // One item per line of `filename` (`kind`: "query", "source"), made by
-// `read(tokens)`; '#' starts a comment. Errors name the file and the line.
+// `read(tokens, line number)`; '#' starts a comment. Errors name the file and the line.
 template <class Read>
 auto read_lines(const std::string& filename, const std::string& kind, const Read& read)
 {
   std::ifstream is(filename);
   if(!is) throw Geodesic_ridge::Invalid_parameter_error("cannot open " + kind + " file '" + filename + "'");
-  std::vector<decltype(read(std::vector<std::string>()))> items;
+  std::vector<decltype(read(std::vector<std::string>(), std::size_t()))> items;
   std::string line;
   for(std::size_t number = 1; std::getline(is, line); ++number)
   {
@@ -496,7 +508,7 @@ auto read_lines(const std::string& filename, const std::string& kind, const Read
     if(t.empty()) continue;
     try
     {
-      items.push_back(read(t));
+      items.push_back(read(t, number));
     }
     catch(const Geodesic_ridge::Error& e)
     {
@@ -511,9 +523,55 @@ auto read_lines(const std::string& filename, const std::string& kind, const Read
 std::vector<Location> read_queries(const std::string& filename, const Mesh& mesh, const File_map& map,
                                    bool barycentric)
 {
-  return read_lines(filename, "query", [&](const std::vector<std::string>& t) {
+  return read_lines(filename, "query", [&](const std::vector<std::string>& t, std::size_t) {
     return read_query(t, mesh, map, barycentric);
   });
+}
+
+// Writes the file `target` whole or not at all: `write(path)` writes a
+// temporary file beside it (in its directory, so that the rename is atomic),
+// renamed onto the target when complete and removed on an error. A run killed
+// at any moment leaves every output complete, or as it was.
+template <class Write>
+void write_atomically(const std::string& target, const Write& write)
+{
+  namespace fs = std::filesystem;
+  const fs::path to(target);
+  const fs::path temporary = to.parent_path() / ("." + to.filename().string() + ".tmp." + std::to_string(getpid()));
+  // created here, so that an unwritable place is said with the target's name
+  if(!std::ofstream(temporary)) throw Geodesic_ridge::Error("cannot open '" + target + "' for writing");
+  try
+  {
+    write(temporary.string());
+    std::error_code ec;
+    fs::rename(temporary, to, ec);
+    if(ec) throw Geodesic_ridge::Error("cannot write '" + target + "': " + ec.message());
+  }
+  catch(...)
+  {
+    std::error_code ec;
+    fs::remove(temporary, ec);
+    throw;
+  }
+}
+
+// Same, through a stream: `write(os)`.
+template <class Write>
+void write_file(const std::string& target, const Write& write, bool binary = false)
+{
+  write_atomically(target, [&](const std::string& path) {
+    std::ofstream os(path, binary ? std::ios::out | std::ios::binary : std::ios::out);
+    if(!os) throw Geodesic_ridge::Error("cannot open '" + target + "' for writing");
+    write(os);
+    os.close();
+    if(!os) throw Geodesic_ridge::Error("cannot write '" + target + "'");
+  });
+}
+
+template <class Polylines>
+void write_polylines(const std::string& filename, const Polylines& polylines)
+{
+  write_file(filename, [&](std::ostream& os) { Geodesic_ridge::IO::write_polylines(os, polylines); });
 }
 
 template <class Lines>
@@ -521,7 +579,7 @@ void write_isolines(const std::string& filename, const Lines& lines)
 {
   std::vector<std::vector<Point_3> > polylines;
   for(const auto& l : lines) polylines.push_back(l.points);
-  Geodesic_ridge::IO::write_polylines(filename, polylines);
+  write_polylines(filename, polylines);
 }
 
 // The statistics as JSON objects, one key per member, named as the member (the
@@ -550,7 +608,7 @@ GEODESIC_RIDGE_JSON_FIELDS(Ridge_curve_statistics, ridge_segments, junctions, fr
                            edge_segments, thin_face_pieces, regions_before_merge, merged_segments, rejoined_segments,
                            border_joining_segments,
                            dropped_components, piece_joining_segments,
-                           pruned_spur_segments, pruned_flat_end_segments)
+                           pruned_spur_segments, pruned_flat_end_segments, coincident_points)
 GEODESIC_RIDGE_JSON_FIELDS(Cone_ridge_statistics, tolerance, points_moved, junctions_moved, points_kept, points_added,
                            kept_linear_ridge,
                            largest_move)
@@ -569,12 +627,8 @@ namespace {
 
 void write_json(const std::string& filename, const Json& j)
 {
-  std::ofstream os(filename);
-  if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
   // a file name that is not UTF-8 gets U+FFFD rather than an exception
-  os << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
-  os.flush();
-  if(!os) throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+  write_file(filename, [&](std::ostream& os) { os << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n'; });
 }
 
 // every step the pipeline timed, stage 1's split into its own steps
@@ -654,21 +708,28 @@ struct Source
   }
 };
 
+// The point q of file face `face`, checked: the face is the file's and the
+// repair kept it, q is on it.
+Location source_point(const Mesh& mesh, const File_map& map, std::size_t face, const Point_3& q)
+{
+  if(face >= map.number_of_file_faces())
+    throw Geodesic_ridge::Invalid_source_error("source face " + std::to_string(face) +
+                                               " is out of range: the mesh has " +
+                                               std::to_string(map.number_of_file_faces()) + " faces");
+  if(map.faces(face).empty())
+    throw Geodesic_ridge::Invalid_source_error("source face " + std::to_string(face) +
+                                               " was removed by the repair (degenerate, duplicate, or with "
+                                               "fewer than 3 distinct vertices)");
+  return locate(map, mesh, face, q);
+}
+
 Source named_source(const Mesh& mesh, const File_map& map, const Options& o)
 {
   if(o.source_vertex) return {source_vertex(mesh, map, *o.source_vertex), Location()};
-  if(*o.source_face >= map.number_of_file_faces())
-    throw Geodesic_ridge::Invalid_source_error(
-        "source face " + std::to_string(*o.source_face) + " is out of range: the mesh has " +
-        std::to_string(map.number_of_file_faces()) + " faces");
-  if(map.faces(*o.source_face).empty())
-    throw Geodesic_ridge::Invalid_source_error("source face " + std::to_string(*o.source_face) +
-                                               " was removed by the repair (degenerate, duplicate, or with "
-                                               "fewer than 3 distinct vertices)");
   const Point_3 q(parse_number("source x", o.source_point_text[0]),
                   parse_number("source y", o.source_point_text[1]),
                   parse_number("source z", o.source_point_text[2]));
-  return {std::nullopt, locate(map, mesh, *o.source_face, q)};
+  return {std::nullopt, source_point(mesh, map, *o.source_face, q)};
 }
 
 // The source's connected component copied into `component` when the mesh has
@@ -803,10 +864,6 @@ void append_other_components(const Mesh& file_mesh, const File_map& file_map, co
 
 void write_refined(const std::string& filename, const Mesh& refined, bool ascii)
 {
-  std::ofstream os(filename, std::ios::binary);
-  if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
-  if(ascii) CGAL::IO::set_ascii_mode(os);
-  else CGAL::IO::set_binary_mode(os);
   // the ridge flags stay in memory: PLY readers disagree on edge elements
   Mesh copy = refined;
   auto ridge_flags = copy.property_map<Mesh::Edge_index, bool>("e:ridge").first;
@@ -815,9 +872,16 @@ void write_refined(const std::string& filename, const Mesh& refined, bool ascii)
   auto distance = copy.property_map<vertex_descriptor, double>("v:distance").first;
   for(vertex_descriptor v : copy.vertices())
     if(!std::isfinite(distance[v])) distance[v] = -1;
-  os.precision(17);
-  if(!CGAL::IO::write_PLY(os, copy, "geodesic distance field, refined along the geodesic ridge") || !os)
-    throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+  write_file(
+      filename,
+      [&](std::ostream& os) {
+        if(ascii) CGAL::IO::set_ascii_mode(os);
+        else CGAL::IO::set_binary_mode(os);
+        os.precision(17);
+        if(!CGAL::IO::write_PLY(os, copy, "geodesic distance field, refined along the geodesic ridge"))
+          throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+      },
+      true);
   std::cout << "wrote " << filename << " (" << refined.number_of_faces() << " faces, vertex property 'distance', "
             << "face property 'source_face')\n";
 }
@@ -825,29 +889,27 @@ void write_refined(const std::string& filename, const Mesh& refined, bool ascii)
 void write_ridge_locations(const std::string& filename, const Ridge_polylines& ridge, const Mesh& mesh,
                            const File_map& map)
 {
-  std::ofstream os(filename);
-  if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
-  os << "# FACE B0 B1 B2 ANGLE: a ridge point, barycentric in the file order of the face's vertices\n"
-        "# (file indices; one value per vertex of the face: for a polygon, the point's coordinates in the\n"
-        "# triangle of it that holds the point, 0 for its other vertices);\n"
-        "# ANGLE: degrees between the two fronts; one polyline after another, '# polyline' between\n";
-  os.precision(17);
   std::size_t points = 0;
-  for(const auto& pl : ridge)
-  {
-    os << "# polyline\n";
-    for(const auto& p : pl)
+  write_file(filename, [&](std::ostream& os) {
+    os << "# FACE B0 B1 B2 ANGLE: a ridge point, barycentric in the file order of the face's vertices\n"
+          "# (file indices; one value per vertex of the face: for a polygon, the point's coordinates in the\n"
+          "# triangle of it that holds the point, 0 for its other vertices);\n"
+          "# ANGLE: degrees between the two fronts; one polyline after another, '# polyline' between\n";
+    os.precision(17);
+    for(const auto& pl : ridge)
     {
-      const Geodesic_ridge::File_face_location l =
-          map.file_location(Location(face_descriptor(Mesh::size_type(p.face)), p.barycentric), mesh);
-      os << l.face;
-      for(double b : l.coordinates) os << ' ' << b;
-      os << ' ' << p.angle << '\n';
-      ++points;
+      os << "# polyline\n";
+      for(const auto& p : pl)
+      {
+        const Geodesic_ridge::File_face_location l =
+            map.file_location(Location(face_descriptor(Mesh::size_type(p.face)), p.barycentric), mesh);
+        os << l.face;
+        for(double b : l.coordinates) os << ' ' << b;
+        os << ' ' << p.angle << '\n';
+        ++points;
+      }
     }
-  }
-  os.flush();
-  if(!os) throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+  });
   std::cout << "wrote " << filename << " (" << points << " ridge points)\n";
 }
 
@@ -864,12 +926,10 @@ void write_distances(const std::string& filename, const Field& field,
   std::vector<double> distances;
   auto next = found.begin();
   for(const auto& q : queries) distances.push_back(q ? *next++ : std::numeric_limits<double>::infinity());
-  std::ofstream os(filename);
-  if(!os) throw Geodesic_ridge::Error("cannot open '" + filename + "' for writing");
-  os.precision(17);
-  for(double d : distances) os << d << '\n';
-  os.flush();
-  if(!os) throw Geodesic_ridge::Error("cannot write '" + filename + "'");
+  write_file(filename, [&](std::ostream& os) {
+    os.precision(17);
+    for(double d : distances) os << d << '\n';
+  });
   std::cout << "wrote " << filename << " (" << distances.size() << " distances)\n";
 }
 
@@ -923,7 +983,9 @@ void write_picture(const std::string& filename, const Mesh& mesh, const Ridge& r
   double largest = 0; // (other components, unreachable, are infinitely far: grey)
   for(vertex_descriptor v : refined.vertices())
     if(std::isfinite(distance[v])) largest = std::max(largest, distance[v]);
-  Geodesic_ridge::IO::write_png(filename, refined, refined.points(), distance, largest, 20, curves);
+  write_atomically(filename, [&](const std::string& path) {
+    Geodesic_ridge::IO::write_png(path, refined, refined.points(), distance, largest, 20, curves);
+  });
   std::cout << "wrote " << filename << "\n";
 }
 
@@ -995,14 +1057,14 @@ int run(const Options& o)
     contour(o, refined, [&](vertex_descriptor v) { return refined_distance[v]; });
   if(!o.ridge.empty())
   {
-    Geodesic_ridge::IO::write_polylines(o.ridge, points_of(reported));
+    write_polylines(o.ridge, points_of(reported));
     std::cout << "wrote " << o.ridge << " (" << reported.size() << " polylines)\n";
   }
   if(!o.rough_cut.empty())
   {
     std::vector<std::vector<Point_3> > polylines;
     Geodesic_ridge::cut_graph_polylines(mesh, ridge.rough_cut_locus, std::back_inserter(polylines));
-    Geodesic_ridge::IO::write_polylines(o.rough_cut, polylines);
+    write_polylines(o.rough_cut, polylines);
     std::cout << "wrote " << o.rough_cut << " (" << polylines.size() << " polylines)\n";
   }
   if(!o.png.empty()) write_picture(o.png, mesh, ridge, points_of(reported), refined, refined_distance);
@@ -1016,100 +1078,267 @@ int run(const Options& o)
 }
 
 // --sources: a line 'V' (a file vertex) or 'FACE X Y Z' (a point of a file
-// face), as a location of the mesh (a vertex as a corner of a face of it).
-struct Batch_source
+// face). Its syntax is checked when the file is read (a bad line refuses the
+// file); whether the mesh has that vertex, or the point on that face, is the
+// source's own success or failure (resolve()).
+struct Source_line
 {
-  Location location;
-  std::string text; // the line, for the outputs
+  std::string text;             // the line, for the outputs
+  std::size_t line = 0;         // its number in the file
+  std::size_t index = 0;        // V, or FACE
+  std::optional<Point_3> point; // X Y Z
 };
 
-Batch_source read_source_line(const std::vector<std::string>& t, const Mesh& mesh, const File_map& map)
+Source_line read_source_line(const std::vector<std::string>& t, std::size_t line)
 {
-  std::string text = t[0];
-  for(std::size_t k = 1; k < t.size(); ++k) text += " " + t[k];
-  if(t.size() == 4) return {read_query(t, mesh, map, false), text};
-  if(t.size() != 1)
+  if(t.size() != 1 && t.size() != 4)
     throw Geodesic_ridge::Invalid_parameter_error("expected 'V' or 'FACE X Y Z', got " + std::to_string(t.size()) +
                                                   " fields");
-  const vertex_descriptor v = source_vertex(mesh, map, parse_index("source vertex", t[0]));
-  return {PMP::locate_vertex<double>(v, mesh), text};
+  Source_line s;
+  s.text = t[0];
+  for(std::size_t k = 1; k < t.size(); ++k) s.text += " " + t[k];
+  s.line = line;
+  s.index = parse_index(t.size() == 1 ? "source vertex" : "source face", t[0]);
+  if(t.size() == 4)
+    s.point = Point_3(parse_number("coordinate", t[1]), parse_number("coordinate", t[2]),
+                      parse_number("coordinate", t[3]));
+  return s;
 }
 
-void write_batch_stats(const std::string& filename, const Options& o, const Batch_source& source, const Ridge& rc)
+// The source on the mesh as read (a vertex as a corner of a face of it).
+Location resolve(const Source_line& s, const Mesh& mesh, const File_map& map)
 {
-  Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source.text}, {"tolerance", o.tolerance},
-                            {"solver", o.solver}, {"linear_ridge", o.linear_ridge},
-                            {"corner_fallback", corner_fallback_used(o)}, {"repair", o.repair}}},
-            {"ridge", {{"polylines", rc.polylines.size()}, {"cone_polylines", rc.cone_polylines.size()}}},
-            {"statistics", rc.statistics}};
-  j["timings_seconds"] = timings_of(rc, 0);
-  write_json(filename, j);
+  if(s.point) return source_point(mesh, map, s.index, *s.point);
+  return PMP::locate_vertex<double>(source_vertex(mesh, map, s.index), mesh);
+}
+
+Json batch_parameters(const Options& o)
+{
+  return {{"tolerance", o.tolerance}, {"solver", o.solver}, {"linear_ridge", o.linear_ridge},
+          {"corner_fallback", corner_fallback_used(o)}, {"repair", o.repair}};
+}
+
+// The one-line message of a source's failure; a bug says so.
+std::string message_of(const Geodesic_ridge::Error& e)
+{
+  return dynamic_cast<const Geodesic_ridge::Algorithm_error*>(&e) ? std::string("internal error: ") + e.what()
+                                                                   : std::string(e.what());
+}
+
+// The outputs of a batch in DIR: per source its files, or its error file, and
+// its outcome for DIR/summary.json.
+class Batch_outputs
+{
+public:
+  Batch_outputs(const Options& o, const std::vector<Source_line>& sources)
+    : o_(o), sources_(sources), outcomes_(sources.size()), terminal_(isatty(fileno(stderr)))
+  {}
+
+  void succeed(std::size_t k, const Ridge& rc)
+  {
+    Json j = {{"parameters", {{"mesh", o_.mesh}, {"source", sources_[k].text}}},
+              {"ridge", {{"polylines", rc.polylines.size()}, {"cone_polylines", rc.cone_polylines.size()}}},
+              {"statistics", rc.statistics}};
+    j["parameters"].update(batch_parameters(o_));
+    j["timings_seconds"] = timings_of(rc, 0);
+    const std::string polylines = name(k, ".polylines.txt"), json = name(k, ".json");
+    write_polylines(path(polylines), points_of(rc.ridge_polylines()));
+    write_json(path(json), j);
+    remove(name(k, ".error.txt")); // of an earlier run
+    outcomes_[k] = {std::string(), rc.timings.total(), {polylines, json}};
+    progress();
+  }
+
+  void fail(std::size_t k, const std::string& message)
+  {
+    const std::string error = name(k, ".error.txt");
+    write_file(path(error), [&](std::ostream& os) { os << message << '\n'; });
+    remove(name(k, ".polylines.txt")); // of an earlier run
+    remove(name(k, ".json"));
+    outcomes_[k] = {message, std::nullopt, {error}};
+    std::cerr << (terminal_ ? "\r" : "") << "geodesic_ridge: error: source " << k << " (line " << sources_[k].line
+              << ": '" << sources_[k].text << "'): " << message << "\n";
+    progress();
+  }
+
+  std::size_t failures() const
+  {
+    return std::count_if(outcomes_.begin(), outcomes_.end(), [](const Outcome& x) { return !x.error.empty(); });
+  }
+
+  // every source in file order: its status, time and files (relative to DIR)
+  void write_summary(double seconds) const
+  {
+    Json list = Json::array();
+    for(std::size_t k = 0; k < sources_.size(); ++k)
+    {
+      const Outcome& x = outcomes_[k];
+      Json s = {{"k", k}, {"source", sources_[k].text}, {"line", sources_[k].line},
+                {"status", x.error.empty() ? "ok" : "error"}};
+      if(!x.error.empty()) s["error"] = x.error;
+      s["seconds"] = x.seconds ? Json(*x.seconds) : Json(nullptr);
+      s["files"] = x.files;
+      list.push_back(std::move(s));
+    }
+    write_json(path("summary.json"),
+               {{"mesh", o_.mesh}, {"sources_file", o_.sources}, {"parameters", batch_parameters(o_)},
+                {"number_of_sources", sources_.size()}, {"failed", failures()}, {"total_seconds", seconds},
+                {"sources", std::move(list)}});
+  }
+
+  std::string path(const std::string& name) const { return (std::filesystem::path(o_.out_dir) / name).string(); }
+
+  void remove(const std::string& name) const
+  {
+    std::error_code ec;
+    std::filesystem::remove(path(name), ec);
+  }
+
+private:
+  struct Outcome
+  {
+    std::string error;              // none: ok
+    std::optional<double> seconds;  // its computation's; none when it failed
+    std::vector<std::string> files; // relative to DIR
+  };
+
+  static std::string name(std::size_t k, const char* suffix) { return "ridge_" + std::to_string(k) + suffix; }
+
+  void progress()
+  {
+    ++done_;
+    if(terminal_) std::cerr << "\rgeodesic_ridge: " << done_ << " of " << sources_.size() << " ridges" << std::flush;
+  }
+
+  const Options& o_;
+  const std::vector<Source_line>& sources_;
+  std::vector<Outcome> outcomes_;
+  bool terminal_;
+  std::size_t done_ = 0;
+};
+
+// The ridges of one component's sources, in file order. A source that the
+// library refuses fails first; then the library's batch stops at the first
+// source whose computation throws, having written those before it: that one
+// fails and the batch goes on after it.
+template <class NamedParameters>
+void compute_component(const Mesh& mesh, const std::vector<std::size_t>& sources, const std::vector<Location>& locations,
+                       Batch_outputs& out, const NamedParameters& np)
+{
+  std::vector<std::size_t> members;
+  std::vector<Location> valid;
+  for(std::size_t i = 0; i < sources.size(); ++i)
+  {
+    try
+    {
+      Geodesic_ridge::make_source(mesh, locations[i], np);
+      members.push_back(sources[i]);
+      valid.push_back(locations[i]);
+    }
+    catch(const Geodesic_ridge::Error& e)
+    {
+      out.fail(sources[i], message_of(e));
+    }
+  }
+  std::size_t next = 0;
+  auto write = [&](const Ridge& rc) { out.succeed(members[next], rc); ++next; };
+  while(next < members.size())
+  {
+    try
+    {
+      const std::vector<Location> rest(valid.begin() + next, valid.end());
+      Geodesic_ridge::compute_ridge_curves(mesh, rest, boost::make_function_output_iterator(write), np);
+    }
+    catch(const Geodesic_ridge::Error& e)
+    {
+      out.fail(members[next++], message_of(e));
+    }
+  }
+}
+
+// The sources on the mesh, grouped by the connected component of their face
+// (`component_of_face`), in file order; a source the mesh does not have fails.
+std::map<std::size_t, std::vector<std::size_t> > resolve_all(const std::vector<Source_line>& sources,
+                                                             const Mesh& mesh, const File_map& map,
+                                                             const std::vector<std::size_t>& component_of_face,
+                                                             std::vector<Location>& locations, Batch_outputs& out)
+{
+  std::map<std::size_t, std::vector<std::size_t> > by_component;
+  for(std::size_t k = 0; k < sources.size(); ++k)
+  {
+    try
+    {
+      locations[k] = resolve(sources[k], mesh, map);
+      by_component[component_of_face[std::size_t(locations[k].first)]].push_back(k);
+    }
+    catch(const Geodesic_ridge::Error& e)
+    {
+      out.fail(k, message_of(e));
+    }
+  }
+  return by_component;
+}
+
+// The library's checks of the mesh and the parameters, on no source (on one
+// component: the library takes one): a bad parameter stops the batch before
+// any work; what throws later is a source's.
+void check_parameters(const Options& o, const Mesh& mesh, std::size_t components)
+{
+  Mesh component;
+  if(components > 1) Geodesic_ridge::extract_connected_component(mesh, *mesh.faces().begin(), component);
+  with_parameters(o, [&](const auto& np) {
+    Geodesic_ridge::compute_ridge_curves(components > 1 ? component : mesh, std::vector<Location>(),
+                                         boost::make_function_output_iterator([](const Ridge&) {}), np);
+    return 0;
+  });
 }
 
 // Many sources: grouped by connected component (each group one batch, the
-// source-independent work done once per component), outputs per source.
+// source-independent work done once per component), outputs per source. A
+// source that fails leaves DIR/ridge_k.error.txt, and the others go on.
 int run_batch(const Options& o)
 {
   const auto t0 = std::chrono::steady_clock::now();
   Mesh file_mesh;
   const File_map file_map = read_mesh(o, file_mesh);
-  const std::vector<Batch_source> sources = read_lines(o.sources, "source", [&](const std::vector<std::string>& t) {
-    return read_source_line(t, file_mesh, file_map);
-  });
+  const std::vector<Source_line> sources = read_lines(o.sources, "source", read_source_line);
   if(sources.empty()) throw Geodesic_ridge::Invalid_parameter_error("source file '" + o.sources + "' has no source");
+  std::vector<std::size_t> id(file_mesh.number_of_faces());
+  const std::size_t components =
+      PMP::connected_components(file_mesh, boost::make_iterator_property_map(id.begin(), get(CGAL::face_index, file_mesh)));
+  check_parameters(o, file_mesh, components);
   std::error_code ec;
   std::filesystem::create_directories(o.out_dir, ec);
   if(ec || !std::filesystem::is_directory(o.out_dir))
     throw Geodesic_ridge::Error("cannot create the output directory '" + o.out_dir + "'");
-  std::vector<std::size_t> id(file_mesh.number_of_faces());
-  const std::size_t components =
-      PMP::connected_components(file_mesh, boost::make_iterator_property_map(id.begin(), get(CGAL::face_index, file_mesh)));
-  std::map<std::size_t, std::vector<std::size_t> > by_component;
-  for(std::size_t k = 0; k < sources.size(); ++k) by_component[id[std::size_t(sources[k].location.first)]].push_back(k);
-  const bool terminal = isatty(fileno(stderr));
-  std::size_t done = 0;
+  Batch_outputs out(o, sources);
+  out.remove("summary.json"); // an earlier run's: there is none until this one ends
+  std::vector<Location> locations(sources.size());
+  const auto by_component = resolve_all(sources, file_mesh, file_map, id, locations, out);
   for(const auto& [component_id, members] : by_component)
   {
     Mesh component;
     std::optional<Component_map> cc;
-    if(components > 1) cc = Geodesic_ridge::extract_connected_component(file_mesh, sources[members[0]].location.first, component);
-    const Mesh& mesh = cc ? component : file_mesh;
-    std::vector<Location> locations;
-    for(std::size_t k : members)
-      locations.push_back(cc ? *cc->component_location(sources[k].location) : sources[k].location);
-    std::size_t next = 0;
-    auto write = [&](const Ridge& rc) {
-      const std::size_t k = members[next++];
-      const std::string base = (std::filesystem::path(o.out_dir) / ("ridge_" + std::to_string(k))).string();
-      Geodesic_ridge::IO::write_polylines(base + ".polylines.txt", points_of(rc.ridge_polylines()));
-      write_batch_stats(base + ".json", o, sources[k], rc);
-      if(terminal) std::cerr << "\rgeodesic_ridge: " << ++done << " of " << sources.size() << " ridges" << std::flush;
-    };
-    try
-    {
-      with_parameters(o, [&](const auto& np) {
-        Geodesic_ridge::compute_ridge_curves(mesh, locations, boost::make_function_output_iterator(write), np);
-        return 0;
-      });
-    }
-    catch(const Geodesic_ridge::Algorithm_error& e)
-    {
-      if(terminal) std::cerr << "\n";
-      throw Geodesic_ridge::Algorithm_error("source " + std::to_string(members[next]) + " ('" +
-                                            sources[members[next]].text + "'): " + e.what());
-    }
+    if(components > 1) cc = Geodesic_ridge::extract_connected_component(file_mesh, locations[members[0]].first, component);
+    std::vector<Location> in_component;
+    for(std::size_t k : members) in_component.push_back(cc ? *cc->component_location(locations[k]) : locations[k]);
+    with_parameters(o, [&](const auto& np) {
+      compute_component(cc ? component : file_mesh, members, in_component, out, np);
+      return 0;
+    });
   }
-  if(terminal) std::cerr << "\n";
+  if(isatty(fileno(stderr))) std::cerr << "\n";
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::cout << "mesh " << o.mesh << ": " << sources.size() << " sources, " << by_component.size()
-            << (by_component.size() == 1 ? " component" : " components") << "; wrote " << o.out_dir
-            << "/ridge_k.polylines.txt and ridge_k.json for k = 0.." << sources.size() - 1 << " (" << seconds
-            << " s";
+  out.write_summary(seconds);
+  const std::size_t failed = out.failures();
+  std::cout << "mesh " << o.mesh << ": " << sources.size() << " sources, " << failed << " failed, "
+            << by_component.size() << (by_component.size() == 1 ? " component" : " components") << "; wrote "
+            << out.path("summary.json") << " (" << seconds << " s";
 #ifdef CGAL_LINKED_WITH_TBB
   std::cout << ", in parallel";
 #endif
   std::cout << ")\n";
-  return 0;
+  return failed == 0 ? 0 : 1;
 }
 
 } // namespace

@@ -46,11 +46,33 @@ cli_failure(unknown_solver        "unknown solver 'mmp'" ${CLI} ${D}/torus_1k.of
 cli_failure(sources_without_dir   "--sources and --out-dir go together" ${CLI} ${D}/torus_1k.off --sources ${B}/queries_torus_1k_points.txt)
 cli_failure(sources_and_source    "give --sources or one source, not both" ${CLI} ${D}/torus_1k.off --source-vertex 0
             --sources ${B}/queries_torus_1k_points.txt --out-dir ${CMAKE_CURRENT_BINARY_DIR}/cli_out/never)
-cli_failure(sources_bad_line      "source file '.*queries_torus_1k_barycentric.txt' line 3: point .* is not on face"
-            ${CLI} ${D}/torus_1k.off --sources ${B}/queries_torus_1k_barycentric.txt --out-dir ${CMAKE_CURRENT_BINARY_DIR}/cli_out/never)
+# a source file that does not parse is refused before any work (a source that
+# is out of range or off its face fails alone: cli.batch.errors)
+cli_failure(sources_bad_line      "source file '.*queries_malformed.txt' line 2: expected 'V' or 'FACE X Y Z', got 3 fields"
+            ${CLI} ${D}/torus_1k.off --sources ${B}/queries_malformed.txt --out-dir ${CMAKE_CURRENT_BINARY_DIR}/cli_out/never)
+cli_failure(sources_bad_number    "source file '.*queries_nan.txt' line 1: coordinate 'nan' is not a finite number"
+            ${CLI} ${D}/torus_1k.off --sources ${B}/queries_nan.txt --out-dir ${CMAKE_CURRENT_BINARY_DIR}/cli_out/never)
+cli_failure(sources_bad_tolerance "tolerance 0.5.* out of range" ${CLI} ${D}/torus_1k.off --tolerance 0.5
+            --sources ${B}/queries_torus_1k_points.txt --out-dir ${CMAKE_CURRENT_BINARY_DIR}/cli_out/never)
 add_test(NAME cli.batch
          COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DD=${D} -DB=${B} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/cli_out
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_batch.cmake)
+# sources that fail: an error file each, the others go on, summary.json, exit 1
+if(NOT CMAKE_VERSION VERSION_LESS 3.19) # string(JSON)
+  add_test(NAME cli.batch.errors
+           COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DD=${D} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/cli_out
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_batch_errors.cmake)
+endif()
+# every output whole or not at all: written beside, then renamed
+add_test(NAME cli.outputs_whole
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DD=${D} -DB=${B} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/cli_out
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_whole_outputs.cmake)
+find_program(GEODESIC_RIDGE_BASH bash)
+if(GEODESIC_RIDGE_BASH AND EXISTS /usr/bin/python3)
+  add_test(NAME cli.batch.killed
+           COMMAND ${GEODESIC_RIDGE_BASH} ${CMAKE_CURRENT_SOURCE_DIR}/cli/kill_batch.sh ${CLI} ${D}/torus_1k.off
+                   ${CMAKE_CURRENT_BINARY_DIR}/cli_out)
+endif()
 cli_failure(heat_point_source     "the heat solver takes a vertex as the source" ${CLI} ${D}/torus_1k.off
             --source-point 0 1.3573468999999998 0.7423328699999999 1.4680988666666668 --solver heat)
 cli_failure(unwritable_png        "cannot open" ${CLI} ${D}/torus_1k.off --source-vertex 0 --png /nonexistent-dir/x.png)

@@ -1,0 +1,128 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# --sources with sources that fail: each leaves DIR/ridge_k.error.txt with its
+# message and the others go on; DIR/summary.json lists every source in file
+# order; the exit status is 1; no temporary file is left. Three runs in one
+# directory on torus_1k (500 vertices, 1000 faces):
+#  - sources out of range or off their face (they fail before any work),
+#  - the heat solver, which refuses a point source while computing it (the
+#    library's batch stops there; the program goes on after it),
+#  - all good (exit 0): the error files of the earlier runs are gone.
+#   cmake -DCLI=prog -DD=data -DOUT=dir -P expect_batch_errors.cmake
+set(dir ${OUT}/batch_errors)
+file(REMOVE_RECURSE ${dir})
+file(MAKE_DIRECTORY ${OUT})
+set(centroid "0 1.3573468999999998 0.7423328699999999 1.4680988666666668")
+set(corner "0 1.4122173 0.70257 1.6491625")
+
+# Writes the sources (ARGN, one per line, after a comment and a blank line:
+# source k is on line k + 3) to FILE.
+function(write_sources file)
+  set(text "# sources of the batch error test\n\n")
+  foreach(s ${ARGN})
+    string(APPEND text "${s}\n")
+  endforeach()
+  file(WRITE ${file} "${text}")
+endfunction()
+
+# Runs the batch on the sources of ARGN with the options EXTRA; checks the
+# exit status (0 or 1), the files of every source and DIR/summary.json.
+# EXPECTED: per source, "ok" or a regular expression of its error message.
+function(run_batch tag extra expected)
+  set(list_file ${OUT}/batch_errors_${tag}.txt)
+  write_sources(${list_file} ${ARGN})
+  execute_process(COMMAND ${CLI} ${D}/torus_1k.off --sources ${list_file} --out-dir ${dir} ${extra}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  list(LENGTH ARGN n)
+  set(failed 0)
+  foreach(e ${expected})
+    if(NOT e STREQUAL "ok")
+      math(EXPR failed "${failed} + 1")
+    endif()
+  endforeach()
+  set(want_rc 1)
+  if(failed EQUAL 0)
+    set(want_rc 0)
+  endif()
+  if(NOT rc STREQUAL want_rc)
+    message(FATAL_ERROR "${tag}: exit ${rc}, expected ${want_rc}\n${out}\n${err}")
+  endif()
+  if(NOT out MATCHES "${n} sources, ${failed} failed")
+    message(FATAL_ERROR "${tag}: the summary line does not say '${n} sources, ${failed} failed':\n${out}")
+  endif()
+  # one error line per failed source, nothing else but notes
+  string(REGEX MATCHALL "geodesic_ridge: error: source [0-9]+ \\(line [0-9]+: [^\n]*\n" lines "${err}")
+  list(LENGTH lines error_lines)
+  if(NOT error_lines EQUAL failed)
+    message(FATAL_ERROR "${tag}: ${error_lines} error lines on stderr, expected ${failed}:\n${err}")
+  endif()
+  file(READ ${dir}/summary.json summary)
+  foreach(key_value "number_of_sources=${n}" "failed=${failed}" "mesh=${D}/torus_1k.off" "sources_file=${list_file}")
+    string(REGEX REPLACE "=.*" "" key "${key_value}")
+    string(REGEX REPLACE "^[^=]*=" "" value "${key_value}")
+    string(JSON got GET "${summary}" ${key})
+    if(NOT got STREQUAL value)
+      message(FATAL_ERROR "${tag}: summary.json: ${key} is '${got}', expected '${value}'")
+    endif()
+  endforeach()
+  string(JSON solver GET "${summary}" parameters solver)
+  string(JSON total GET "${summary}" total_seconds)
+  string(JSON listed LENGTH "${summary}" sources)
+  if(NOT listed EQUAL n OR total LESS_EQUAL 0 OR solver STREQUAL "")
+    message(FATAL_ERROR "${tag}: summary.json: ${listed} sources, total_seconds ${total}, solver '${solver}'")
+  endif()
+  math(EXPR last "${n} - 1")
+  foreach(k RANGE ${last})
+    list(GET ARGN ${k} source)
+    list(GET expected ${k} e)
+    math(EXPR line "${k} + 3")
+    string(JSON got_k GET "${summary}" sources ${k} k)
+    string(JSON got_source GET "${summary}" sources ${k} source)
+    string(JSON got_line GET "${summary}" sources ${k} line)
+    string(JSON status GET "${summary}" sources ${k} status)
+    string(JSON files GET "${summary}" sources ${k} files)
+    string(JSON seconds TYPE "${summary}" sources ${k} seconds)
+    if(NOT got_k EQUAL k OR NOT got_source STREQUAL source OR NOT got_line EQUAL line)
+      message(FATAL_ERROR "${tag}: summary.json: source ${k} is k ${got_k}, '${got_source}', line ${got_line}")
+    endif()
+    set(base ${dir}/ridge_${k})
+    if(e STREQUAL "ok")
+      if(NOT status STREQUAL "ok" OR NOT seconds STREQUAL "NUMBER"
+         OR NOT files MATCHES "\"ridge_${k}.polylines.txt\".*\"ridge_${k}.json\"")
+        message(FATAL_ERROR "${tag}: summary.json: source ${k} (${source}): ${status}, seconds ${seconds}, ${files}")
+      endif()
+      if(NOT EXISTS ${base}.polylines.txt OR NOT EXISTS ${base}.json OR EXISTS ${base}.error.txt)
+        message(FATAL_ERROR "${tag}: source ${k} (${source}): expected its ridge and no error file")
+      endif()
+      file(STRINGS ${base}.polylines.txt polylines)
+      list(LENGTH polylines count)
+      if(count EQUAL 0)
+        message(FATAL_ERROR "${tag}: source ${k} (${source}): an empty ridge")
+      endif()
+    else()
+      string(JSON message GET "${summary}" sources ${k} error)
+      if(NOT status STREQUAL "error" OR NOT message MATCHES "${e}" OR NOT files MATCHES "\"ridge_${k}.error.txt\"")
+        message(FATAL_ERROR "${tag}: summary.json: source ${k} (${source}): ${status}, '${message}', ${files}")
+      endif()
+      if(NOT EXISTS ${base}.error.txt OR EXISTS ${base}.polylines.txt OR EXISTS ${base}.json)
+        message(FATAL_ERROR "${tag}: source ${k} (${source}): expected an error file and no ridge")
+      endif()
+      file(READ ${base}.error.txt text)
+      if(NOT text STREQUAL "${message}\n" OR NOT err MATCHES "error: source ${k} \\(line ${line}: '[^\n]*'\\): ${e}")
+        message(FATAL_ERROR "${tag}: source ${k}: the error file says '${text}', stderr:\n${err}")
+      endif()
+    endif()
+  endforeach()
+  file(GLOB temporaries ${dir}/*tmp*)
+  if(temporaries)
+    message(FATAL_ERROR "${tag}: temporary files left: ${temporaries}")
+  endif()
+  message(STATUS "${tag}: exit ${rc}, ${n} sources, ${failed} failed")
+endfunction()
+
+run_batch(mixed "" "ok;ok;source vertex 500 is out of range: the mesh has 500 vertices;ok;ok;source point \\(100 100 100\\) is not on face 0;ok;source face 1000 is out of range: the mesh has 1000 faces;ok;source vertex 5000 is out of range;ok;ok"
+          0 17 500 "${centroid}" 100 "0 100 100 100" 250 "1000 0 0 0" 400 5000 499 "${corner}")
+# (a corner of a face is a vertex: the heat solver takes it)
+run_batch(heat "--solver;heat" "ok;the heat solver takes a vertex as the source;ok;ok;the heat solver takes a vertex;ok"
+          0 "${centroid}" 17 "${corner}" "0 1.3710645 0.7323921525 1.513364775" 100)
+run_batch(all_good "" "ok;ok;ok;ok;ok;ok;ok;ok;ok;ok;ok;ok"
+          0 17 1 "${centroid}" 100 2 250 3 400 4 499 "${corner}")
