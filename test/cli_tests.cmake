@@ -22,6 +22,11 @@ cli_failure(two_sources           "one source only" ${CLI} ${D}/torus_1k.off --s
 cli_failure(missing_file          "no_such_mesh.off" ${CLI} ${B}/no_such_mesh.off --source-vertex 0)
 cli_failure(garbage_file          "garbage.off" ${CLI} ${B}/garbage.off --source-vertex 0)
 cli_failure(truncated_file        "truncated" ${CLI} ${B}/truncated.off --source-vertex 0)
+# a header that announces more than the file can hold is refused before anything is allocated
+cli_failure(huge_counts_off       "file is truncated: the header announces 2000000000 vertices and 2000000000 faces, but it ends after 4 vertices"
+            ${CLI} ${B}/huge_counts.off --source-vertex 0)
+cli_failure(huge_counts_ply       "the header announces 3 'vertex', 2000000000 'face', which take at least .* bytes, but the file has 227"
+            ${CLI} ${B}/huge_counts.ply --source-vertex 0)
 cli_failure(nan_coordinate        "(NaN|nan|finite|malformed|cannot read)" ${CLI} ${B}/nan_coordinate.off --source-vertex 0)
 # quads.off: two quads (triangulated, with a note) and an isolated vertex
 function(cli_failure_after_notes name expect notes)

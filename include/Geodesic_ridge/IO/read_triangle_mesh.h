@@ -29,6 +29,7 @@
 #include <charconv>
 #include <cmath>
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -432,6 +433,119 @@ inline void check_file_can_be_opened(const std::string& filename)
                            (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
 }
 
+// The counts a header announces must fit in the file: CGAL's OFF reader
+// reserves the announced vertices before reading one (a 40-byte file whose
+// header announced 2e9 vertices ended in "out of memory"). Each element takes
+// at least a few bytes: an ASCII OFF vertex "x y z\n" 6, a face "0\n" 2; a PLY
+// item, in binary, its scalar properties and its lists' counts, in ASCII 2
+// bytes per property. A header that announces more than the file can hold is
+// refused before anything is allocated.
+class Header_counts
+{
+public:
+  explicit Header_counts(const std::string& filename) : filename_(filename)
+  {
+    std::error_code ec;
+    size_ = std::filesystem::file_size(filename, ec);
+    if(ec) size_ = 0;
+  }
+
+  void check(Mesh_file_format format) const
+  {
+    if(size_ == 0) return; // (an empty or unreadable file: the readers say so)
+    if(format == Mesh_file_format::OFF) check_OFF();
+    else if(format == Mesh_file_format::PLY) check_PLY();
+  }
+
+private:
+  [[noreturn]] void refuse(const std::string& announced, std::uintmax_t least) const
+  {
+    file_error(filename_, "the header announces " + announced + ", which take at least " + std::to_string(least) +
+                            " bytes, but the file has " + std::to_string(size_) + ": refused before reading");
+  }
+
+  // ASCII OFF and its variants (COFF, NOFF, ...): the keyword, then "V F E"
+  void check_OFF() const
+  {
+    Token_lines lines(filename_);
+    std::vector<std::string> t;
+    if(!lines.next(t) || t[0].size() < 3 || t[0].compare(t[0].size() - 3, 3, "OFF") != 0) return;
+    if(t.size() > 1) t.erase(t.begin());
+    else if(!lines.next(t)) return;
+    long long nv = 0, nf = 0;
+    if(t.size() < 2 || !parse_integer(t[0], nv) || !parse_integer(t[1], nf) || nv < 0 || nf < 0) return;
+    // (a binary OFF's counts come after "BINARY": not parsed, so not checked)
+    const long double least = 6.0L * nv + 2.0L * nf;
+    if(!(least > static_cast<long double>(size_))) return;
+    // the line-by-line diagnosis allocates only what is there and names
+    // where the file ends (it throws: the file cannot hold the counts)
+    std::vector<CGAL::Epick::Point_3> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    diagnose_OFF(filename_, points, polygons);
+    refuse(std::to_string(nv) + " vertices and " + std::to_string(nf) + " faces",
+             static_cast<std::uintmax_t>((std::min)(least, 1.8e19L)));
+  }
+
+  static int scalar_bytes(const std::string& type)
+  {
+    if(type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if(type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if(type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
+      return 4;
+    if(type == "double" || type == "float64") return 8;
+    return 0;
+  }
+
+  void check_PLY() const
+  {
+    std::ifstream in(filename_, std::ios::binary);
+    std::string line;
+    bool binary = false;
+    struct Element { std::string name; long long count = 0; long double least = 0; };
+    std::vector<Element> elements;
+    std::uintmax_t header = 0;
+    for(int lines = 0; std::getline(in, line) && lines < 100000; ++lines)
+    {
+      header += line.size() + 1;
+      std::istringstream words(line);
+      std::string keyword;
+      words >> keyword;
+      if(keyword == "format") { std::string f; words >> f; binary = f != "ascii"; }
+      else if(keyword == "element")
+      {
+        Element e;
+        if(!(words >> e.name >> e.count) || e.count < 0) return; // (CGAL's reader says what is wrong)
+        elements.push_back(e);
+      }
+      else if(keyword == "property" && !elements.empty())
+      {
+        std::string type;
+        words >> type;
+        if(type == "list") words >> type; // the count's type: at least the count is there
+        const int bytes = scalar_bytes(type);
+        if(bytes == 0) return;
+        elements.back().least += binary ? bytes : 2;
+      }
+      else if(keyword == "end_header")
+      {
+        long double least = 0;
+        std::string announced;
+        for(const Element& e : elements)
+        {
+          least += e.least * e.count;
+          announced += (announced.empty() ? "" : ", ") + std::to_string(e.count) + " '" + e.name + "'";
+        }
+        if(least > static_cast<long double>(size_ - (std::min)(size_, header)))
+          refuse(announced, static_cast<std::uintmax_t>((std::min)(least + header, 1.8e19L)));
+        return;
+      }
+    }
+  }
+
+  const std::string& filename_;
+  std::uintmax_t size_ = 0;
+};
+
 // Runs f; an `Invalid_mesh_error` it throws is thrown again, of the same type,
 // with the file name in front of its message.
 template <class F>
@@ -478,6 +592,7 @@ void read_polygon_soup_or_throw(const std::string& filename, std::vector<Point>&
 {
   const Mesh_file_format format = mesh_file_format(filename);
   check_file_can_be_opened(filename);
+  Header_counts(filename).check(format);
 
   std::vector<Point> strict_points;
   std::vector<std::vector<std::size_t>> strict_polygons;
