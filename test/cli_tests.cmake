@@ -67,6 +67,10 @@ if(NOT CMAKE_VERSION VERSION_LESS 3.19) # string(JSON)
   add_test(NAME cli.batch.errors
            COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DD=${D} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/cli_out
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_batch_errors.cmake)
+  # (its own test: the sanitizer run skips the heat method by name)
+  add_test(NAME cli.batch.errors_heat
+           COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DD=${D} -DOUT=${CMAKE_CURRENT_BINARY_DIR}/cli_out -DHEAT=ON
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_batch_errors.cmake)
 endif()
 # every output whole or not at all: written beside, then renamed
 add_test(NAME cli.outputs_whole

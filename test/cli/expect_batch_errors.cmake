@@ -7,8 +7,14 @@
 #  - the heat solver, which refuses a point source while computing it (the
 #    library's batch stops there; the program goes on after it),
 #  - all good (exit 0): the error files of the earlier runs are gone.
-#   cmake -DCLI=prog -DD=data -DOUT=dir -P expect_batch_errors.cmake
-set(dir ${OUT}/batch_errors)
+# With -DHEAT=ON only the heat run (its own test: the sanitizer build skips
+# the heat method, whose CGAL 5.5 code UBSan reports; scripts/test.sh).
+#   cmake -DCLI=prog -DD=data -DOUT=dir [-DHEAT=ON] -P expect_batch_errors.cmake
+if(HEAT)
+  set(dir ${OUT}/batch_errors_heat)
+else()
+  set(dir ${OUT}/batch_errors)
+endif()
 file(REMOVE_RECURSE ${dir})
 file(MAKE_DIRECTORY ${OUT})
 set(centroid "0 1.3573468999999998 0.7423328699999999 1.4680988666666668")
@@ -119,10 +125,13 @@ function(run_batch tag extra expected)
   message(STATUS "${tag}: exit ${rc}, ${n} sources, ${failed} failed")
 endfunction()
 
+if(HEAT)
+  # (a corner of a face is a vertex: the heat solver takes it)
+  run_batch(heat "--solver;heat" "ok;the heat solver takes a vertex as the source;ok;ok;the heat solver takes a vertex;ok"
+            0 "${centroid}" 17 "${corner}" "0 1.3710645 0.7323921525 1.513364775" 100)
+  return()
+endif()
 run_batch(mixed "" "ok;ok;source vertex 500 is out of range: the mesh has 500 vertices;ok;ok;source point \\(100 100 100\\) is not on face 0;ok;source face 1000 is out of range: the mesh has 1000 faces;ok;source vertex 5000 is out of range;ok;ok"
           0 17 500 "${centroid}" 100 "0 100 100 100" 250 "1000 0 0 0" 400 5000 499 "${corner}")
-# (a corner of a face is a vertex: the heat solver takes it)
-run_batch(heat "--solver;heat" "ok;the heat solver takes a vertex as the source;ok;ok;the heat solver takes a vertex;ok"
-          0 "${centroid}" 17 "${corner}" "0 1.3710645 0.7323921525 1.513364775" 100)
 run_batch(all_good "" "ok;ok;ok;ok;ok;ok;ok;ok;ok;ok;ok;ok"
           0 17 1 "${centroid}" 100 2 250 3 400 4 499 "${corner}")
