@@ -644,9 +644,7 @@ std::pair<std::size_t, std::size_t> ridge_graph_with_border(const TriangleMesh& 
       loops.unite(a, b);
     }
   // nodes: the loops' roots (by vertex index), then the ridge points
-  CGAL::Bbox_3 box;
-  for(auto v : vertices(tm)) box += get(vpm, v).bbox();
-  Coincident_points id(coincident_tolerance(box));
+  Coincident_points id(coincident_tolerance(tm, vpm));
   std::size_t points = 0;
   const std::size_t first_point = num_vertices(tm);
   std::vector<std::pair<std::size_t, std::size_t> > edges;

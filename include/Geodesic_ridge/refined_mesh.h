@@ -158,7 +158,7 @@ public:
                 ConstrainedMap constrained_out, Visitor visitor)
     : tm_(tm), maps_(maps), ridge_(ridge), out_(out), field_(field), vpm_out_(vpm_out), distance_out_(distance_out),
       constrained_out_(constrained_out), visitor_(visitor), faces_(tm, maps.vpm, maps.fim), nf_(num_faces(tm)),
-      vertex_of_mesh_vertex_(num_vertices(tm), OGT::null_vertex()), near_(coincident_tolerance(bounding_box()))
+      vertex_of_mesh_vertex_(num_vertices(tm), OGT::null_vertex()), near_(coincident_tolerance(tm, maps.vpm))
   {}
 
   Refined_mesh_statistics run()
@@ -238,13 +238,6 @@ private:
     for(int k = 0; k < 3; ++k)
       if(!edge_points_[edge_index(f, k)].empty()) return true;
     return false;
-  }
-
-  CGAL::Bbox_3 bounding_box() const
-  {
-    CGAL::Bbox_3 box;
-    for(auto v : vertices(tm_)) box += get(maps_.vpm, v).bbox();
-    return box;
   }
 
   out_vertex new_vertex(const Point& p)

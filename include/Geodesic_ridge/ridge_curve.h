@@ -668,7 +668,7 @@ public:
     : tm_(tm), maps_(maps), E_(E), face_copies_(face_copies), mean_edge_(mean_edge), minimum_angle_(minimum_angle),
       kink_angle_(kink_angle), angle_sum_(angle_sum), regions_(regions), st_(st), faces_(tm, maps.vpm, maps.fim),
       nf_(num_faces(tm)), same_front_tolerance_(1e-6 * mean_edge), cones_(cones),
-      coincident_(coincident_tolerance(bounding_box(tm, maps.vpm)))
+      coincident_(coincident_tolerance(tm, maps.vpm))
   {}
 
   void run(std::vector<std::vector<Ridge_point<Point> > >& polylines)
@@ -802,13 +802,15 @@ private:
     p.point = barycentric_to_point(lambda, cp[0], cp[1], cp[2]);
     const std::array<double, 3> xyz = {{CGAL::to_double(p.point.x()), CGAL::to_double(p.point.y()),
                                         CGAL::to_double(p.point.z())}};
+    // (a key's kind is the dimension of the feature it lies on: 0 vertex, 1 edge, 2 face)
+    const int feature = std::get<0>(key);
     const std::size_t same = coincident_.find(xyz, [&](std::size_t n) { return faces_share_a_vertex(nodes_[n].face, f); });
     if(same != Coincident_points::none)
     {
-      if(feature_dimension(std::get<0>(key)) < node_feature_[same])
+      if(feature < node_feature_[same])
       {
         nodes_[same] = p;
-        node_feature_[same] = feature_dimension(std::get<0>(key));
+        node_feature_[same] = feature;
         coincident_.insert(same, xyz);
       }
       if(node_loop_[same] == none) node_loop_[same] = loop;
@@ -817,7 +819,7 @@ private:
       return same;
     }
     node_loop_.push_back(loop);
-    node_feature_.push_back(feature_dimension(std::get<0>(key)));
+    node_feature_.push_back(feature);
     nodes_.push_back(p);
     coincident_.insert(nodes_.size() - 1, xyz);
     node_of_.emplace(key, nodes_.size() - 1);
@@ -832,16 +834,6 @@ private:
       for(const auto& b : hg)
         if(source(a, tm_) == source(b, tm_)) return true;
     return false;
-  }
-  // a key's kind is the dimension of the feature it lies on: 0 vertex, 1 edge, 2 face
-  static int feature_dimension(int kind) { return kind; }
-
-  template <class VPM>
-  static CGAL::Bbox_3 bounding_box(const TriangleMesh& tm, VPM vpm)
-  {
-    CGAL::Bbox_3 box;
-    for(vertex_descriptor v : vertices(tm)) box += get(vpm, v).bbox();
-    return box;
   }
 
   // The loops of the border of M (b of them): per vertex its loop, or none

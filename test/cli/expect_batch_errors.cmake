@@ -10,6 +10,7 @@
 # With -DHEAT=ON only the heat run (its own test: the sanitizer build skips
 # the heat method, whose CGAL 5.5 code UBSan reports; scripts/test.sh).
 #   cmake -DCLI=prog -DD=data -DOUT=dir [-DHEAT=ON] -P expect_batch_errors.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/no_temporaries.cmake)
 if(HEAT)
   set(dir ${OUT}/batch_errors_heat)
 else()
@@ -118,10 +119,7 @@ function(run_batch tag extra expected)
       endif()
     endif()
   endforeach()
-  file(GLOB temporaries ${dir}/*tmp*)
-  if(temporaries)
-    message(FATAL_ERROR "${tag}: temporary files left: ${temporaries}")
-  endif()
+  expect_no_temporaries(${dir} ${tag})
   message(STATUS "${tag}: exit ${rc}, ${n} sources, ${failed} failed")
 endfunction()
 

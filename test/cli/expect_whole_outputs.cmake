@@ -4,6 +4,7 @@
 # after a write that fails (the target is a directory: the rename fails), the
 # temporary file is gone too.
 #   cmake -DCLI=prog -DD=data -DB=cli_data -DOUT=dir -P expect_whole_outputs.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/no_temporaries.cmake)
 set(dir ${OUT}/whole_outputs)
 file(REMOVE_RECURSE ${dir})
 file(MAKE_DIRECTORY ${dir})
@@ -38,8 +39,5 @@ execute_process(COMMAND ${CLI} ${D}/torus_1k.off --source-vertex 0 --stats ${dir
 if(NOT rc EQUAL 1 OR NOT err MATCHES "error: cannot write '${dir}/taken'")
   message(FATAL_ERROR "a directory as the target: exit ${rc}\n${err}")
 endif()
-file(GLOB temporaries ${dir}/*tmp*)
-if(temporaries)
-  message(FATAL_ERROR "temporary files left: ${temporaries}")
-endif()
+expect_no_temporaries(${dir} "the outputs")
 message(STATUS "${outputs}: whole, no temporary file")

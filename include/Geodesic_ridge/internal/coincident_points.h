@@ -42,6 +42,15 @@ inline double coincident_tolerance(const CGAL::Bbox_3& box)
   return coincident_fraction * std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
+/// the absolute tolerance of `coincident_fraction` for the vertices of `tm`
+template <class TriangleMesh, class VertexPointMap>
+double coincident_tolerance(const TriangleMesh& tm, VertexPointMap vpm)
+{
+  CGAL::Bbox_3 box;
+  for(auto v : vertices(tm)) box += get(vpm, v).bbox();
+  return coincident_tolerance(box);
+}
+
 /// Points by id, each found again by any point within the tolerance
 /// (Euclidean): a hash grid of cells as wide as the tolerance.
 class Coincident_points
