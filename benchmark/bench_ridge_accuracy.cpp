@@ -46,7 +46,10 @@
 // it is in several parts, measured on its largest (the name gets "_part").
 //
 // Solver vtp: our exact window propagation (Window_propagation_solver), with
-// the exact checks of --diagnose ('exact+vtp' runs both exact solvers).
+// its cones as the exact solver's (the cone ridge, the kink split) and the
+// exact checks of --diagnose ('exact+vtp' runs both exact solvers);
+// 'vtp-cone' with the cone field (the exact lower envelope of its windows),
+// 'vtp+vtp-cone' both.
 // Solvers heat, heat-idt and dijkstra are the baselines (issue 14); the heat
 // method runs from the vertex sources only ('approximate' runs fmm and the
 // three).
@@ -122,6 +125,8 @@
 #include <Geodesic_ridge/solvers/Dijkstra_solver.h>
 #include <Geodesic_ridge/solvers/Heat_method_solver.h>
 #include <Geodesic_ridge/solvers/Window_propagation_solver.h>
+
+#include <unistd.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -207,7 +212,9 @@ std::string read_back(const Mesh& mesh, const RidgePolylines& ridge, bool& ok)
 {
   std::vector<std::vector<K::Point_3> > points;
   Geodesic_ridge::ridge_polyline_points(ridge, std::back_inserter(points));
-  const fs::path file = fs::temp_directory_path() / "bench_ridge_accuracy_ridge.polylines.txt";
+  // one file per process: two benchmarks may run at once
+  const fs::path file =
+      fs::temp_directory_path() / ("bench_ridge_accuracy_ridge." + std::to_string(::getpid()) + ".polylines.txt");
   Geodesic_ridge::IO::write_polylines(file.string(), points);
   const GT::Written_ridge_topology t = GT::written_ridge_topology(mesh, file.string());
   fs::remove(file);
@@ -299,8 +306,10 @@ int main(int argc, char** argv)
       if(s == "both") solvers = {"exact", "fmm"};
       else if(s == "exact+cone") solvers = {"exact", "cone"};
       else if(s == "exact+vtp") solvers = {"exact", "vtp"};
+      else if(s == "vtp+vtp-cone") solvers = {"vtp", "vtp-cone"};
       else if(s == "approximate") solvers = {"fmm", "heat", "heat-idt", "dijkstra"};
-      else if(s == "exact" || s == "vtp" || s == "fmm" || s == "cone" || s == "heat" || s == "heat-idt" || s == "dijkstra")
+      else if(s == "exact" || s == "vtp" || s == "vtp-cone" || s == "fmm" || s == "cone" || s == "heat" ||
+              s == "heat-idt" || s == "dijkstra")
         solvers = {s};
       else { std::cerr << "unknown solver " << s << "\n"; return 2; }
     }
@@ -422,8 +431,10 @@ int main(int argc, char** argv)
           auto run = [&](double t) {
             namespace p = Geodesic_ridge::parameters;
             if(solver == "fmm") return ridge_of(p::solver(Geodesic_ridge::Fast_marching_solver(), options.parameters(t)));
-            if(solver == "vtp")
-              return ridge_of(p::solver(Geodesic_ridge::Window_propagation_solver(), options.parameters(t)));
+            if(solver == "vtp") return ridge_of(options.cone_parameters(t, Geodesic_ridge::Window_propagation_solver()));
+            if(solver == "vtp-cone")
+              return ridge_of(p::field(Geodesic_ridge::Field::cone,
+                                       options.cone_parameters(t, Geodesic_ridge::Window_propagation_solver())));
             if(solver == "heat") return ridge_of(p::solver(Geodesic_ridge::Heat_method_solver<>(), options.parameters(t)));
             if(solver == "heat-idt")
               return ridge_of(p::solver(Geodesic_ridge::Heat_method_idt_solver(), options.parameters(t)));
@@ -470,7 +481,7 @@ int main(int argc, char** argv)
           if(diagnose)
           {
             r.diagnosed = true;
-            const bool exact = solver == "exact" || solver == "cone" || solver == "vtp";
+            const bool exact = solver == "exact" || solver == "cone" || solver == "vtp" || solver == "vtp-cone";
             auto larger_e = [&] { // fast marching on an E grown from fmm_reference_rings rings everywhere
               namespace p = Geodesic_ridge::parameters;
               const auto np = p::initial_rings(fmm_reference_rings, p::fast_marching_margin(0, p::tolerance(tolerance,

@@ -34,7 +34,7 @@ inline std::vector<std::string> benchmark_meshes(std::vector<std::string> files)
 ///   --initial-rings K --extension-step K --maximum-rings K --maximum-solves K --fast-marching-margin K
 ///   --spur-angle DEG --tree-from-solver 0|1 --predicted 0|1
 ///   --leaf-curvature DEG --branch-curvature DEG --kink-angle DEG --corner-fallback 0|1
-///   --cone-ridge 0|1 (with the exact solver: `exact_parameters()`)
+///   --cone-ridge 0|1 (with the solvers that have cones: `cone_parameters()`)
 struct Pipeline_options
 {
   int initial_rings = Geodesic_ridge::default_initial_rings, extension_step = Geodesic_ridge::default_extension_step,
@@ -78,13 +78,17 @@ struct Pipeline_options
            p::corner_fallback(corner_fallback, p::fast_marching_margin(fast_marching_margin)))))))))))));
   }
 
-  /// with the exact solver: the parameters and whether the ridge is the cone
-  /// ridge
-  auto exact_parameters(double tolerance) const
+  /// with a solver that has cones (exact, vtp): the parameters and whether
+  /// the ridge is the cone ridge
+  template <class Solver>
+  auto cone_parameters(double tolerance, const Solver& solver) const
   {
     namespace p = Geodesic_ridge::parameters;
-    return p::cone_ridge(cone_ridge, p::solver(Geodesic_ridge::Exact_solver(), parameters(tolerance)));
+    return p::cone_ridge(cone_ridge, p::solver(solver, parameters(tolerance)));
   }
+
+  /// with the exact solver: `cone_parameters()`
+  auto exact_parameters(double tolerance) const { return cone_parameters(tolerance, Geodesic_ridge::Exact_solver()); }
 };
 
 #endif

@@ -127,8 +127,11 @@ endforeach()
 add_test(NAME cli.field.cone
          COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off -DDATA=${B} -DOUT=${OUTDIR}/cone
                  "-DEXTRA=--field;cone" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_field_outputs.cmake)
-cli_failure(cone_with_vtp         "the cone field needs the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver vtp --field cone)
-cli_failure(cone_with_fmm         "the cone field needs the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --field cone)
+# the cone field of window propagation: the exact lower envelope of its windows
+add_test(NAME cli.field.cone_vtp
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off -DDATA=${B} -DOUT=${OUTDIR}/cone_vtp
+                 "-DEXTRA=--solver;vtp;--field;cone" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_field_outputs.cmake)
+cli_failure(cone_with_fmm         "the cone field needs a solver with cones: exact or vtp" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --field cone)
 # without the exact solver's corner fallback samples (parameters::corner_fallback(false))
 add_test(NAME cli.ridge.no_corner_fallback.bunny_1k
          COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/bunny_1k.off "-DSOURCE=--source-vertex;5"
@@ -139,9 +142,13 @@ add_test(NAME cli.ridge.linear_ridge.bunny_1k
          COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/bunny_1k.off "-DSOURCE=--source-vertex;5"
                  "-DEXTRA=--linear-ridge" -DOUT=${OUTDIR}/linear_ridge -DGENUS=0
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
-cli_failure(linear_ridge_fmm      "--linear-ridge is for the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --linear-ridge)
+add_test(NAME cli.ridge.linear_ridge_vtp.bunny_1k
+         COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/bunny_1k.off "-DSOURCE=--source-vertex;5"
+                 "-DEXTRA=--solver;vtp;--linear-ridge" -DOUT=${OUTDIR}/linear_ridge_vtp -DGENUS=0
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_rough_cut.cmake)
+cli_failure(linear_ridge_fmm      "--linear-ridge is for the solvers with cones" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --linear-ridge)
 cli_failure(linear_ridge_cone     "--linear-ridge is not for the cone field" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field cone --linear-ridge)
-cli_failure(no_corner_fallback_fmm  "--no-corner-fallback is for the exact solver" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --no-corner-fallback)
+cli_failure(no_corner_fallback_fmm  "--no-corner-fallback is for the solvers with cones" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --no-corner-fallback)
 cli_failure(no_corner_fallback_cone "--no-corner-fallback is for the linear field" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field cone --no-corner-fallback)
 cli_failure(unknown_field         "unknown field 'planar'" ${CLI} ${D}/torus_1k.off --source-vertex 0 --field planar)
 set(Q ${D}/torus_1k.off --source-vertex 0 --query-out ${OUTDIR}/q.txt --query)

@@ -23,6 +23,7 @@
 #include <Geodesic_ridge/distance_field.h>
 #include <Geodesic_ridge/isolines.h>
 #include <Geodesic_ridge/refined_mesh.h>
+#include <Geodesic_ridge/solvers/Window_propagation_solver.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
@@ -650,6 +651,57 @@ TEST_CASE("cone field and ridge: exact on the doubly covered square, far better 
   CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(
                       m, vertex_descriptor(0), p::field(Geodesic_ridge::Field::cone, p::solver(Geodesic_ridge::Fast_marching_solver()))),
                   Geodesic_ridge::Invalid_parameter_error);
+}
+
+TEST_CASE("cone field with window propagation: the windows' lower envelope is the exact distance", "[distance_field][vtp]")
+{
+  // every window is the length of a real path, and the shortest path to any
+  // point runs through one of them: against SMSP on M, within round-off at
+  // random points, on genus 0 and 1, with a border, from a vertex and from a
+  // point inside a face; and the cone ridge is traced from them
+  namespace p = Geodesic_ridge::parameters;
+  const auto vtp_cone = p::field(Geodesic_ridge::Field::cone, p::solver(Geodesic_ridge::Window_propagation_solver()));
+  const unsigned seed = test_seed(20261206);
+  for(const std::string name : {"bunny_1k.off", "armadillo_2k.off", "torus_1k.off", "eight.off", "boundary/open_box.off"})
+  {
+    const Mesh m = read_data_mesh(name);
+    typedef CGAL::Surface_mesh_shortest_path_traits<K, Mesh> Traits;
+    for(int k = 0; k < 3; ++k)
+    {
+      CGAL::Surface_mesh_shortest_path<Traits> sp(m);
+      Ridge rc;
+      std::string from;
+      if(k < 2)
+      {
+        const vertex_descriptor s(static_cast<Mesh::size_type>((k * 2 + 1) * m.number_of_vertices() / 4));
+        sp.add_source_point(s);
+        rc = Geodesic_ridge::compute_ridge_curve(m, s, vtp_cone);
+        from = "vertex " + std::to_string(std::size_t(s));
+      }
+      else
+      {
+        const Location src(face_descriptor(static_cast<Mesh::size_type>(m.number_of_faces() / 3)), {{0.2, 0.3, 0.5}});
+        sp.add_source_point(src.first, {{0.2, 0.3, 0.5}});
+        rc = Geodesic_ridge::compute_ridge_curve(m, src, vtp_cone);
+        from = "a point of face " + std::to_string(std::size_t(src.first));
+      }
+      sp.build_sequence_tree();
+      const auto field = Geodesic_ridge::make_distance_field(m, rc, p::field(Geodesic_ridge::Field::cone));
+      double worst = 0;
+      for(const Location& l : random_face_locations(m, 3000, seed + k))
+      {
+        const double exact =
+            sp.shortest_distance_to_source_points(l.first, {{l.second[0], l.second[1], l.second[2]}}).first;
+        if(exact > 0) worst = std::max(worst, std::abs(field.distance(l) - exact) / exact);
+      }
+      INFO(name << " from " << from << " seed " << seed + k << ": largest relative error " << worst);
+      std::cout << "[distance_field] vtp cone field, " << name << " from " << from << ": largest relative error "
+                << worst << "\n";
+      CHECK(worst <= 1e-9);
+      CHECK(rc.statistics.cone_ridge_traced);
+      CHECK(!rc.cone_polylines.empty());
+    }
+  }
 }
 
 TEST_CASE("refined mesh: points of a neighbour's cells on a side make a conforming star", "[distance_field]")

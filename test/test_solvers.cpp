@@ -731,17 +731,18 @@ TEST_CASE("window propagation on hard cases: holes and pinched vertices, corners
 
 namespace {
 
-// The exact solver as the pipeline sees the window-propagation solver: exact
-// distances, no cones (so no kink split).
-struct Exact_solver_without_cones
+// An exact solver as the pipeline sees it without cones (so no kink split,
+// no cone ridge): the two exact solvers, compared on distances alone.
+template <class Solver>
+struct Without_cones
 {
-  static const char* name() { return "exact-without-cones"; }
+  static const char* name() { return Solver::name(); }
   static constexpr bool is_exact = true;
   static constexpr bool has_cones = false;
   template <class... Args>
   void operator()(Args&&... args) const
   {
-    Geodesic_ridge::Exact_solver()(std::forward<Args>(args)...);
+    Solver()(std::forward<Args>(args)...);
   }
 };
 
@@ -750,19 +751,22 @@ struct Exact_solver_without_cones
 TEST_CASE("window propagation drives the pipeline like the exact solver", "[solvers][vtp][ridge_curve]")
 {
   namespace p = Geodesic_ridge::parameters;
-  // without the kink split (which reads the exact solver's cones), the two
-  // exact solvers grow the same E and give the same ridge
+  // without the kink split (which reads the solvers' cones), the two exact
+  // solvers grow the same E and give the same ridge
   static_assert(Geodesic_ridge::Geodesic_solver_traits<Geodesic_ridge::Window_propagation_solver>::is_exact);
-  static_assert(!Geodesic_ridge::Geodesic_solver_traits<Geodesic_ridge::Window_propagation_solver>::has_cones);
+  static_assert(Geodesic_ridge::Geodesic_solver_traits<Geodesic_ridge::Window_propagation_solver>::has_cones);
+  static_assert(Geodesic_ridge::Geodesic_solver_traits<Geodesic_ridge::Window_propagation_solver>::has_windows);
   static_assert(Geodesic_ridge::Geodesic_solver_traits<Geodesic_ridge::Exact_solver>::has_cones);
+  static_assert(!Geodesic_ridge::Geodesic_solver_traits<Geodesic_ridge::Exact_solver>::has_windows);
   for(const char* name : {"torus_1k.off", "bunny_1k.off", "eight.off"})
   {
     const Mesh m = load(name);
     for(vertex_descriptor s : {vertex_descriptor(0), vertex_descriptor(static_cast<Mesh::size_type>(m.number_of_vertices() / 2))})
     {
       INFO(name << " source " << std::size_t(s));
-      const auto exact = Geodesic_ridge::compute_ridge_curve(m, s, p::solver(Exact_solver_without_cones()));
-      const auto vtp = Geodesic_ridge::compute_ridge_curve(m, s, p::solver(Geodesic_ridge::Window_propagation_solver()));
+      const auto exact = Geodesic_ridge::compute_ridge_curve(m, s, p::solver(Without_cones<Geodesic_ridge::Exact_solver>()));
+      const auto vtp =
+          Geodesic_ridge::compute_ridge_curve(m, s, p::solver(Without_cones<Geodesic_ridge::Window_propagation_solver>()));
       CHECK(vtp.statistics.solver == std::string("vtp"));
       CHECK(vtp.statistics.extended_surface.number_of_faces == exact.statistics.extended_surface.number_of_faces);
       CHECK(vtp.statistics.solves == exact.statistics.solves);
@@ -777,8 +781,54 @@ TEST_CASE("window propagation drives the pipeline like the exact solver", "[solv
   }
   // the cone field needs cones
   const Mesh m = load("torus_1k.off");
-  CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0),
-                                                      p::field(Geodesic_ridge::Field::cone,
-                                                               p::solver(Geodesic_ridge::Window_propagation_solver()))),
+  CHECK_THROWS_AS(Geodesic_ridge::compute_ridge_curve(
+                      m, vertex_descriptor(0),
+                      p::field(Geodesic_ridge::Field::cone,
+                               p::solver(Without_cones<Geodesic_ridge::Window_propagation_solver>()))),
                   Geodesic_ridge::Invalid_parameter_error);
+}
+
+TEST_CASE("window propagation gives the cones of the exact solver at the samples", "[solvers][vtp]")
+{
+  // the cone of a sample is the apex and offset of its shortest path's last
+  // straight piece: both solvers' cones give the exact distance there, and
+  // the same apex where the sample is not near a boundary between windows
+  for(const char* name : {"bunny_1k.off", "torus_1k.off"})
+  {
+    const Mesh m = load(name);
+    const vertex_descriptor s(7);
+    std::vector<double> d_exact(m.number_of_vertices()), d_vtp(m.number_of_vertices());
+    std::vector<Geodesic_ridge::Face_cone> exact, vtp;
+    std::vector<std::vector<Geodesic_ridge::Face_cone> > windows;
+    auto every = [](std::size_t) { return true; };
+    const auto& samples = Geodesic_ridge::Exact_solver::cone_samples();
+    Geodesic_ridge::Exact_solver()(m, s, CGAL::make_property_map(d_exact), exact, every);
+    Geodesic_ridge::Window_propagation_solver()(m, s, CGAL::make_property_map(d_vtp), vtp, every, samples, &windows);
+    REQUIRE(exact.size() == vtp.size());
+    REQUIRE(windows.size() == m.number_of_faces());
+    std::size_t same_apex = 0;
+    double worst = 0;
+    for(auto f : m.faces())
+    {
+      const auto h = m.halfedge(f);
+      const std::array<Point_3, 3> p = {{m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h)))}};
+      const Geodesic_ridge::internal::Face_plane plane(p);
+      CHECK(!windows[std::size_t(f)].empty());
+      for(std::size_t j = 0; j < samples.size(); ++j)
+      {
+        const auto x = plane.point(samples[j]);
+        const auto& a = exact[samples.size() * std::size_t(f) + j];
+        const auto& b = vtp[samples.size() * std::size_t(f) + j];
+        const double da = std::sqrt(CGAL::squared_distance(x, plane.point(a.apex))) + a.offset;
+        const double db = std::sqrt(CGAL::squared_distance(x, plane.point(b.apex))) + b.offset;
+        worst = std::max(worst, std::abs(da - db) / da);
+        same_apex += CGAL::squared_distance(plane.point(a.apex), plane.point(b.apex)) < 1e-12;
+      }
+    }
+    const std::size_t all = samples.size() * m.number_of_faces();
+    INFO(name << ": largest relative difference at the samples " << worst << ", same apex " << same_apex << " of "
+              << all);
+    CHECK(worst <= 1e-9);
+    CHECK(same_apex >= 0.95 * all);
+  }
 }

@@ -447,18 +447,27 @@ void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vecto
 }
 
 // Same, and the cones of the copies for which wanted(copy) is true (called by
-// the solver once `distance` is written); the solver must offer cones.
+// the solver once `distance` is written), and with `windows` their windows;
+// the solver must offer cones (and windows, if asked for).
 template <class Point, class Solver, class Wanted>
 void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vector<double>& distance,
-              std::vector<Face_cone>& cones, const Wanted& wanted, const std::vector<std::array<double, 3> >& samples)
+              std::vector<Face_cone>& cones, const Wanted& wanted, const std::vector<std::array<double, 3> >& samples,
+              std::vector<std::vector<Face_cone> >* windows)
 {
-  if constexpr(Geodesic_solver_traits<std::decay_t<Solver> >::has_cones)
+  if constexpr(Geodesic_solver_traits<std::decay_t<Solver> >::has_windows)
   {
+    if(E.source_is_vertex)
+      solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance), cones, wanted, samples, windows);
+    else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), cones, wanted, samples, windows);
+  }
+  else if constexpr(Geodesic_solver_traits<std::decay_t<Solver> >::has_cones)
+  {
+    if(windows) throw Invalid_parameter_error(std::string("the solver '") + solver.name() + "' gives no windows");
     if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance), cones, wanted, samples);
     else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), cones, wanted, samples);
   }
   else
-    throw Invalid_parameter_error(std::string("the cones (the cone field, the cone ridge) need a solver that offers them (the exact solver), not '") + solver.name() + "'");
+    throw Invalid_parameter_error(std::string("the cones (the cone field, the cone ridge) need a solver that offers them (exact, vtp), not '") + solver.name() + "'");
 }
 
 // Fast marching over E from the corners of its first `anchor.size()` copies,
@@ -569,11 +578,11 @@ public:
                    double mean_edge, Extended_surface<Point>& E, std::vector<Face_copies>& face_copies,
                    std::vector<double>& vertex_distances, Geodesic_ridge_statistics& st, Timings& timings,
                    std::vector<Face_cone>* cones, const std::vector<std::array<double, 3> >& cone_samples,
-                   double cones_near_kinks_only, bool whole_faces)
+                   double cones_near_kinks_only, bool whole_faces, std::vector<std::vector<Face_cone> >* windows)
     : tm_(tm), src_(src), builder_(builder), solver_(solver), schedule_(schedule),
       E_(E), face_copies_(face_copies), vertex_distances_(vertex_distances), st_(st), timings_(timings),
       cones_(cones), cone_samples_(cone_samples), cones_near_kinks_only_(cones_near_kinks_only),
-      whole_faces_(whole_faces),
+      whole_faces_(whole_faces), windows_(windows),
       across_(builder.faces_across_edges()), fast_marching_slack_(0.02 * mean_edge), exact_slack_(1e-9 * mean_edge),
       reopen_margin_(1e-9 * mean_edge)
   {}
@@ -676,7 +685,7 @@ private:
       }
       return keep[copy] != 0;
     };
-    solve_on(E_, solver_, distance_, *cones_, wanted, cone_samples_);
+    solve_on(E_, solver_, distance_, *cones_, wanted, cone_samples_, windows_);
     ++st_.solves;
   }
 
@@ -688,7 +697,7 @@ private:
       solve_on(E_, solver_, distance, *cones_, [&](std::size_t copy) {
         if(keep.empty()) keep = cones_wanted(distance);
         return keep[copy] != 0;
-      }, cone_samples_);
+      }, cone_samples_, windows_);
     });
     ++st_.solves;
   }
@@ -697,6 +706,11 @@ private:
   // near kinks, or those of faces that have one near kinks
   std::vector<char> cones_wanted(const std::vector<double>& distance) const
   {
+    // the windows of every copy: a copy that the corner distances dominate
+    // can still be lowest inside the face (a distance is convex along a
+    // window, its linear interpolation is not: armadillo_2k from vertex 0,
+    // 0.5 % too long at a point of face 1599 with the undominated copies only)
+    if(windows_) return std::vector<char>(E_.mesh.number_of_faces(), 1);
     std::vector<char> keep(E_.mesh.number_of_faces(), 0);
     for(const Face_copies& fc : face_copies_)
       for(std::size_t c : fc.copies) keep[c] = 1;
@@ -774,6 +788,7 @@ private:
   const std::vector<std::array<double, 3> >& cone_samples_;
   const double cones_near_kinks_only_;
   const bool whole_faces_;
+  std::vector<std::vector<Face_cone> >* const windows_; // per copy, with a solver that gives them
   const Faces_across& across_; // the builder's
   // a copy that wins on the border by less than this is no winner: noise
   // between neighbouring fronts (fast marching), round-off (the exact solver)
@@ -814,7 +829,7 @@ Pipeline_options pipeline_options(const NamedParameters& np, const Solver& solve
   o.maximum_solves = choose_parameter(get_parameter(np, internal_np::maximum_solves_t()), default_maximum_solves);
   o.field = choose_parameter(get_parameter(np, internal_np::field_t()), Field::linear);
   if(o.field == Field::cone && !Geodesic_solver_traits<std::decay_t<Solver> >::has_cones)
-    throw Invalid_parameter_error(std::string("the cone field needs a solver with cones (the exact solver), not '") + solver.name() + "'");
+    throw Invalid_parameter_error(std::string("the cone field needs a solver with cones (exact, vtp), not '") + solver.name() + "'");
   o.cone_ridge_tolerance = get_number_in_range<internal_np::cone_ridge_tolerance_t>(
       np, default_cone_ridge_tolerance, std::numeric_limits<double>::min(), 1, false, "cone ridge tolerance", "(0, 1]");
   o.tree_from_solver = choose_parameter(get_parameter(np, internal_np::tree_from_solver_t()), false);
@@ -828,7 +843,7 @@ Pipeline_options pipeline_options(const NamedParameters& np, const Solver& solve
   if(o.field == Field::cone && !o.cone_ridge)
     throw Invalid_parameter_error("cone_ridge(false) with the cone field: the cone field's ridge is the cone ridge");
   if(o.cone_ridge && !has_cones)
-    throw Invalid_parameter_error(std::string("the cone ridge needs a solver with cones (the exact solver), not '") + solver.name() + "'");
+    throw Invalid_parameter_error(std::string("the cone ridge needs a solver with cones (exact, vtp), not '") + solver.name() + "'");
   if(o.initial_rings < 0 || o.maximum_rings < o.initial_rings || o.extension_step < 1)
     throw Invalid_parameter_error("extension rings: need 0 <= initial_rings <= maximum_rings and extension_step >= 1");
   if(o.maximum_solves < 1) throw Invalid_parameter_error("maximum_solves must be at least 1");
@@ -851,6 +866,7 @@ class Geodesic_ridge_pipeline
   typedef typename Maps::Face_index_map FaceIndexMap;
   typedef Extended_surface_builder<TriangleMesh, Maps> Builder;
   static constexpr bool solver_has_cones = Geodesic_solver_traits<std::decay_t<Solver> >::has_cones;
+  static constexpr bool solver_has_windows = Geodesic_solver_traits<std::decay_t<Solver> >::has_windows;
 
 public:
   // `angles`: the mesh's corner angles, if a batch of sources computed them once
@@ -940,7 +956,8 @@ private:
     Extension_growth<TriangleMesh, Builder, Solver, Point> growth(
         tm_, src_, builder, solver_, schedule, mean_edge_, E_, face_copies_, result_.vertex_distances, st_,
         timings_, options_.cone_ridge || split_at_kinks() ? &copy_cones_ : nullptr, cone_samples(),
-        cone_field ? 0 : kink_filter_share * options_.kink_angle, options_.cone_ridge);
+        cone_field ? 0 : kink_filter_share * options_.kink_angle, options_.cone_ridge,
+        cone_field && solver_has_windows ? &copy_windows_ : nullptr);
     growth.run();
     copy_corners_ = growth.take_corner_distances();
     st_.extended_surface = E_.statistics;
@@ -948,6 +965,25 @@ private:
     // per face of M, the cones of its undominated copies, where they were read
     std::vector<std::vector<Face_cone> >& cones = cone_field ? result_.cones : face_cones_;
     cones.assign(num_faces(tm_), {});
+    if(cone_field && solver_has_windows)
+    {
+      // the windows of every copy of each face, numbered by face
+      std::vector<std::uint32_t> copies(num_faces(tm_), 0);
+      for(std::size_t c = 0; c < copy_windows_.size(); ++c)
+      {
+        if(copy_windows_[c].empty()) continue;
+        const std::size_t f = E_.original_face[c];
+        for(Face_cone w : copy_windows_[c])
+        {
+          w.copy = copies[f];
+          cones[f].push_back(w);
+        }
+        ++copies[f];
+        std::vector<Face_cone>().swap(copy_windows_[c]); // the peak of memory: one of the two at a time
+      }
+      std::vector<std::vector<Face_cone> >().swap(copy_windows_);
+      return;
+    }
     for(std::size_t f = 0; f < face_copies_.size(); ++f)
       for(std::size_t c : face_copies_[f].copies) append_sampled_cones(c, cones[f]);
   }
@@ -1082,6 +1118,7 @@ private:
   Extended_surface<Point> E_;
   std::vector<Face_copies> face_copies_;
   std::vector<Face_cone> copy_cones_;
+  std::vector<std::vector<Face_cone> > copy_windows_; // per copy of E, with the cone field of a solver with windows
   std::vector<std::vector<Face_cone> > face_cones_; // for the cone ridge without the cone field
   std::vector<std::array<double, 3> > copy_corners_; // per copy of E, at the last solve
 };

@@ -32,6 +32,7 @@
 #define GEODESIC_RIDGE_CONE_RIDGE_H
 
 #include <Geodesic_ridge/internal/coincident_points.h>
+#include <Geodesic_ridge/internal/face_cone_field.h>
 #include <Geodesic_ridge/internal/faces_by_index.h>
 #include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/lower_envelope.h>
@@ -69,114 +70,6 @@ struct Cone_ridge_statistics
 };
 
 namespace internal {
-
-/// A face in its own plane: corner 0 at the origin, corner 1 on the x axis at
-/// (l, 0), corner 2 at (x2, y2) with y2 > 0. Maps barycentric coordinates (in
-/// the order of a `Face_location`) to plane coordinates and back.
-struct Face_plane
-{
-  typedef CGAL::Epick::Point_2 Point_2;
-  typedef CGAL::Epick::Vector_2 Vector_2;
-  double l = 1, x2 = 0, y2 = 1;
-
-  Face_plane() = default;
-  template <class Point_3>
-  explicit Face_plane(const std::array<Point_3, 3>& p)
-  {
-    typedef CGAL::Epick::Vector_3 Vector;
-    const Vector e1(CGAL::to_double(p[1].x() - p[0].x()), CGAL::to_double(p[1].y() - p[0].y()),
-                    CGAL::to_double(p[1].z() - p[0].z()));
-    const Vector e2(CGAL::to_double(p[2].x() - p[0].x()), CGAL::to_double(p[2].y() - p[0].y()),
-                    CGAL::to_double(p[2].z() - p[0].z()));
-    l = std::sqrt(e1.squared_length());
-    x2 = e1 * e2 / l;
-    y2 = std::sqrt(CGAL::cross_product(e1, e2).squared_length()) / l;
-  }
-
-  Point_2 point(const std::array<double, 3>& b) const { return Point_2(b[1] * l + b[2] * x2, b[2] * y2); }
-
-  /// corner k (0, 1, 2)
-  Point_2 corner(int k) const { return k == 0 ? Point_2(0, 0) : k == 1 ? Point_2(l, 0) : Point_2(x2, y2); }
-
-  std::array<double, 3> barycentric(const Point_2& x) const
-  {
-    const double b2 = x.y() / y2, b1 = (x.x() - b2 * x2) / l;
-    return {{1 - b1 - b2, b1, b2}};
-  }
-
-  /// the barycentric coordinates of a direction (they sum to 0)
-  std::array<double, 3> barycentric(const Vector_2& d) const
-  {
-    const double b2 = d.y() / y2, b1 = (d.x() - b2 * x2) / l;
-    return {{-b1 - b2, b1, b2}};
-  }
-};
-
-/// The cone field of one face: `count` cones, S per copy (copy-major), S the
-/// number of `samples` (`Exact_solver::cone_samples()`, or
-/// `Exact_solver::cone_ridge_fallback_samples()` for the cone ridge alone).
-class Face_cone_field
-{
-public:
-  Face_cone_field(const Face_plane& plane, const Face_cone* cones, std::size_t count,
-                  const std::vector<std::array<double, 3> >& samples = Exact_solver::cone_samples())
-      : plane_(plane), cones_(cones), count_(count), samples_(&samples)
-  {}
-
-  std::size_t number_of_copies() const { return count_ / samples().size(); }
-
-  /// The distance by copy `c` at plane point `x`.
-  double value(std::size_t c, const Face_plane::Point_2& x) const
-  {
-    return cone_value(cones_[c * samples().size() + nearest_sample(x)], x);
-  }
-
-  /// The copy lowest at `x` (the first of equals) and its distance.
-  std::pair<std::size_t, double> lowest(const Face_plane::Point_2& x) const
-  {
-    const std::size_t S = samples().size();
-    std::pair<std::size_t, double> best(0, std::numeric_limits<double>::infinity());
-    for(std::size_t c = nearest_sample(x); c < count_; c += S)
-    {
-      const double v = cone_value(cones_[c], x);
-      if(v < best.second) best = {c / S, v};
-    }
-    return best;
-  }
-
-  /// The apex (in the plane) of the cone that copy `c` uses at `x`.
-  Face_plane::Point_2 apex(std::size_t c, const Face_plane::Point_2& x) const
-  {
-    return plane_.point(cones_[c * samples().size() + nearest_sample(x)].apex);
-  }
-
-  const Face_plane& plane() const { return plane_; }
-
-private:
-  const std::vector<std::array<double, 3> >& samples() const { return *samples_; }
-
-  std::size_t nearest_sample(const Face_plane::Point_2& x) const
-  {
-    std::size_t nearest = 0;
-    double nearest_d2 = std::numeric_limits<double>::infinity();
-    for(std::size_t i = 0; i < samples().size(); ++i)
-    {
-      const double d2 = CGAL::squared_distance(x, plane_.point(samples()[i]));
-      if(d2 < nearest_d2) { nearest_d2 = d2; nearest = i; }
-    }
-    return nearest;
-  }
-
-  double cone_value(const Face_cone& cone, const Face_plane::Point_2& x) const
-  {
-    return std::sqrt(CGAL::squared_distance(x, plane_.point(cone.apex))) + cone.offset;
-  }
-
-  Face_plane plane_;
-  const Face_cone* cones_;
-  std::size_t count_;
-  const std::vector<std::array<double, 3> >* samples_;
-};
 
 /// Traces the ridge of the cone field from the ridge of the linear field (see
 /// the top of this file). `cones`: per face, the cones of its copies

@@ -19,7 +19,12 @@ The named parameter `Geodesic_ridge::parameters::solver()` passes a model to the
 pipeline (user manual: \ref GeodesicRidgeSecSolvers). A model of your own is
 taken as approximate unless it declares `static constexpr bool is_exact = true`
 (`Geodesic_ridge::Geodesic_solver_traits`), in which case it must also offer
-`Exact_solver`'s cone query (a wrapper of `Exact_solver` forwards it);
+`Exact_solver`'s cone query (a wrapper of `Exact_solver` forwards it) unless
+it declares `has_cones = false`. A model that declares `has_windows = true`
+(`Window_propagation_solver`) offers the cone query with one more argument, a
+pointer to a `std::vector<std::vector<Face_cone> >` that it fills with the
+windows of every wanted face (`Face_cone::entry` set): the cone field is then
+their exact lower envelope;
 \ref custom_solver_example.cpp is one in a few lines. Models are copied: keep state that must outlive a call behind a
 pointer. This file documents the concept; it is no header to include.
 */

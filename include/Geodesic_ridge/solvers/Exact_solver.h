@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -34,6 +35,22 @@ struct Face_cone
   std::array<double, 3> apex = {{0, 0, 0}}; ///< barycentric in the face (CGAL's corner order; may lie outside it)
   /// the distance at the apex
   double offset = 0;
+  /// the part of edge `entry` a window passes (fractions from its first corner)
+  std::array<double, 2> through = {{0, 1}};
+  /// Of a window: the index of its copy among the copies of the face (the
+  /// cone field `Ridge_curve::cones` of a solver with windows, where a copy
+  /// is the lower envelope of its windows); `no_copy` for the sampled cones
+  /// of `Exact_solver`, S per copy.
+  std::uint32_t copy = no_copy;
+  /// A window (`Window_propagation_solver`): the straight way from the apex
+  /// enters the face through edge `entry` (from corner `entry` to corner
+  /// `entry + 1`, mod 3) between the fractions `through[0]` and `through[1]`
+  /// of it (from corner `entry`); a point that the straight way reaches
+  /// elsewhere is reached around the nearer end of that part. -1: the
+  /// straight way everywhere (a sampled cone, a corner, the source).
+  std::int8_t entry = -1;
+  /// the `copy` of a sampled cone
+  static constexpr std::uint32_t no_copy = 0xffffffffu;
 };
 
 /// \ingroup PkgGeodesicRidgeSolvers

@@ -19,6 +19,7 @@
 #define GEODESIC_RIDGE_SOLVERS_WINDOW_PROPAGATION_SOLVER_H
 
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/face_cone_field.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/solver_from_source.h>
 #include <Geodesic_ridge/source.h>
@@ -32,6 +33,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -151,6 +153,7 @@ public:
         const std::array<double, 3> w = minus(p, point_[corner_[h]]);
         improve(corner_[h], norm(w), theta_[h] + std::atan2(norm(cross(u, w)), dot(u, w)));
         const Vec2 s = in_edge_frame(h, p);
+        if(h % 3 == 0) record(Cone_record{h, false, 0., 0., s, 0.}); // the source, straight to every point of f
         if(s.y > 1e-12 * length_[h]) enter_across(h, s, 0., 0., length_[h]);
       }
     run(distance);
@@ -158,6 +161,38 @@ public:
 
   /// the number of windows that crossed a triangle in the last run
   std::size_t propagated_windows() const { return propagated_; }
+
+  /// The faces (by index; none if null) whose cones the next runs keep: the
+  /// windows that cross the face, its corners as pseudo-sources, the source
+  /// point. `faces` must outlive the runs.
+  void keep_cones(const std::vector<char>* faces) { keep_cones_ = faces; }
+
+  /// After a run with `keep_cones`: the cones of face f, each a window
+  /// (`Face_cone::entry` set: the straight way through its part of the entry
+  /// edge) or a cone straight to every point of the face (a corner that
+  /// paths bend around, the source), with barycentric apexes in the order of
+  /// the face's corners. The lowest of their paths at a point of the face is
+  /// its distance.
+  template <class Output>
+  void cones_of_faces(const Output& out) const
+  {
+    const std::size_t nf = corner_.size() / 3;
+    std::vector<std::size_t> first(nf + 1, 0), order(records_.size());
+    for(const Cone_record& r : records_) ++first[r.frame / 3 + 1];
+    for(std::size_t f = 0; f < nf; ++f) first[f + 1] += first[f];
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for(std::size_t i = 0; i < records_.size(); ++i) order[fill[records_[i].frame / 3]++] = i;
+    std::vector<Face_cone> cones;
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      cones.clear();
+      for(std::size_t i = first[f]; i < first[f + 1]; ++i) cones.push_back(face_cone(records_[order[i]]));
+      out(f, cones);
+    }
+  }
+
+  /// face f in its plane (corner 0 at the origin, corner 1 on the x axis)
+  Face_plane plane(std::size_t f) const { return Face_plane(length_[3 * f], apex_[3 * f].x, apex_[3 * f].y); }
 
 private:
   static constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
@@ -173,6 +208,41 @@ private:
     Vec2 image;
     double sigma;
   };
+
+  // A cone that reaches into face `frame / 3`: the image of its
+  // (pseudo-)source in the frame of half-edge `frame` and its distance sigma;
+  // a window enters through that half-edge in [b0, b1].
+  struct Cone_record
+  {
+    std::size_t frame;
+    bool window;
+    double b0, b1;
+    Vec2 image;
+    double sigma;
+  };
+
+  void record(const Cone_record& r)
+  {
+    if(keep_cones_ && (*keep_cones_)[r.frame / 3]) records_.push_back(r);
+  }
+
+  // a record as a Face_cone of its face (barycentric in corner order)
+  Face_cone face_cone(const Cone_record& r) const
+  {
+    const std::size_t h = r.frame;
+    const int k = int(h % 3);
+    Face_cone cone;
+    cone.apex[(k + 2) % 3] = r.image.y / apex_[h].y;
+    cone.apex[(k + 1) % 3] = (r.image.x - cone.apex[(k + 2) % 3] * apex_[h].x) / length_[h];
+    cone.apex[k] = 1 - cone.apex[(k + 1) % 3] - cone.apex[(k + 2) % 3];
+    cone.offset = r.sigma;
+    if(r.window)
+    {
+      cone.entry = static_cast<std::int8_t>(k);
+      cone.through = {{r.b0 / length_[h], r.b1 / length_[h]}};
+    }
+    return cone;
+  }
 
   static std::size_t next(std::size_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
   static std::size_t prev(std::size_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
@@ -247,6 +317,7 @@ private:
     key_.assign(corner_.size(), std::numeric_limits<double>::infinity());
     queue_ = Queue();
     propagated_ = 0;
+    records_.clear();
   }
 
   // a path of length d reaches vertex v from the direction at angle `back`
@@ -300,6 +371,8 @@ private:
     for(std::size_t k = star_begin_[v]; k < star_begin_[v + 1]; ++k)
     {
       const std::size_t h = star_[k];        // from v
+      // v's cone, straight to every point of the face (in h's frame v is the origin)
+      record(Cone_record{h, false, 0., 0., Vec2{0., 0.}, d});
       const double alpha = corner_angle_[h];
       // the directions to leave by, as angles from the edge h: [lo, hi]
       double lo = 0., hi = alpha;
@@ -386,6 +459,7 @@ private:
     for(const Window& w : windows)
     {
       ++propagated_;
+      record(Cone_record{h, true, w.b0, w.b1, w.image, w.sigma});
       // the apex
       const Vec2 d0{w.b0 - w.image.x, -w.image.y}, d1{w.b1 - w.image.x, -w.image.y};
       const Vec2 sp{p2.x - w.image.x, p2.y - w.image.y};
@@ -472,6 +546,8 @@ private:
   std::vector<std::vector<Window> > pending_;
   Queue queue_;
   std::size_t propagated_ = 0;
+  const std::vector<char>* keep_cones_ = nullptr;
+  std::deque<Cone_record> records_; // no copies as it grows: it is the peak of memory with the cone field
 };
 
 } // namespace internal
@@ -483,9 +559,12 @@ private:
 /// shortest path lengths on the mesh, up to floating-point rounding (within
 /// 1e-9 relative of it on the test meshes). Its memory holds the wavefront
 /// only, not a tree of all windows, and it is much faster on large meshes.
-/// It offers no cones: the cone field (`field(Field::cone)`) and the cone
-/// ridge (`cone_ridge`, the default ridge with `Exact_solver`) need
-/// `Exact_solver`; with this solver the ridge reported is the linear field's. Sources on a vertex, on an edge or inside a face; border
+///
+/// It offers the cone query of `Exact_solver` (the cones at sample points of
+/// the faces, for the kink split and the cone ridge) and, beyond it, the
+/// windows of every face (`has_windows`): with them the cone field
+/// (`field(Field::cone)`) is the exact lower envelope of the windows' cones,
+/// nothing sampled. Sources on a vertex, on an edge or inside a face; border
 /// edges are respected (paths bend around border vertices).
 struct Window_propagation_solver : internal::Solver_from_source<Window_propagation_solver>
 {
@@ -493,8 +572,74 @@ struct Window_propagation_solver : internal::Solver_from_source<Window_propagati
   static const char* name() { return "vtp"; }
   /// `true`: exact distances (`Geodesic_solver_traits`)
   static constexpr bool is_exact = true;
-  /// `false`: no cone query (`Geodesic_solver_traits`)
-  static constexpr bool has_cones = false;
+  /// `true`: the cone query of `Exact_solver` (`Geodesic_solver_traits`)
+  static constexpr bool has_cones = true;
+  /// `true`: the windows of the faces (`Geodesic_solver_traits`)
+  static constexpr bool has_windows = true;
+
+  using internal::Solver_from_source<Window_propagation_solver>::operator();
+
+  /// The cone query of `Exact_solver` (on the mesh's own points): the distances, and
+  /// `cones[S * i + j]`, the cone of the face of index i at its sample point
+  /// j (`Exact_solver::cone_samples()`, S of them), for every face for which
+  /// `wanted(i)` is true (called once the distances are written). A sample's
+  /// cone is that of the window lowest there: exact at the sample.
+  template <class TriangleMesh, class Source, class VertexDistanceMap, class Wanted>
+  void operator()(const TriangleMesh& tm, const Source& s, VertexDistanceMap distance, std::vector<Face_cone>& cones,
+                  const Wanted& wanted) const
+  {
+    (*this)(tm, s, distance, cones, wanted, Exact_solver::cone_samples());
+  }
+
+  /// Same, at the given sample points.
+  template <class TriangleMesh, class Source, class VertexDistanceMap, class Wanted>
+  void operator()(const TriangleMesh& tm, const Source& s, VertexDistanceMap distance, std::vector<Face_cone>& cones,
+                  const Wanted& wanted, const std::vector<std::array<double, 3> >& samples) const
+  {
+    (*this)(tm, s, distance, cones, wanted, samples, nullptr);
+  }
+
+  /// Same, and with `windows` (if not null), `(*windows)[i]` the windows of
+  /// every wanted face i (`Face_cone::entry` set; corners that paths bend
+  /// around and the source as cones straight to every point of the face):
+  /// the lowest of their paths at a point of the face is its distance.
+  template <class TriangleMesh, class Source, class VertexDistanceMap, class Wanted>
+  void operator()(const TriangleMesh& tm, const Source& s, VertexDistanceMap distance, std::vector<Face_cone>& cones,
+                  const Wanted& wanted, const std::vector<std::array<double, 3> >& samples,
+                  std::vector<std::vector<Face_cone> >* windows) const
+  {
+    const auto np = CGAL::parameters::default_values();
+    const auto maps = internal::mesh_maps(tm, np);
+    const auto src = make_source(tm, s, np);
+    internal::Window_propagation propagation(tm, maps.vpm, maps.vim, maps.fim);
+    const std::size_t S = samples.size(), nf = num_faces(tm);
+    std::vector<char> want(nf, 1);
+    // The windows of the cone field: every face's, in one run (its `wanted`
+    // is all faces). The cones of the kink split: a first run for the
+    // distances that tell the wanted faces, then a second that keeps their
+    // windows only (some 60 windows cross each face of a 100k-face mesh:
+    // keeping every face's costs 4 times the propagation's memory, for the
+    // kink split's few faces).
+    if(windows) propagation.keep_cones(&want);
+    propagate(tm, src, distance, maps, propagation);
+    cones.assign(S * nf, Face_cone());
+    if(windows) windows->assign(nf, {});
+    for(std::size_t i = 0; i < nf; ++i) want[i] = wanted(i);
+    if(std::find(want.begin(), want.end(), 1) == want.end()) return;
+    if(!windows)
+    {
+      propagation.keep_cones(&want);
+      propagate(tm, src, distance, maps, propagation);
+    }
+    propagation.keep_cones(nullptr);
+    propagation.cones_of_faces([&](std::size_t f, const std::vector<Face_cone>& face_windows) {
+      if(!want[f]) return;
+      const internal::Face_plane plane = propagation.plane(f);
+
+      for(std::size_t j = 0; j < S; ++j) cones[S * f + j] = sampled_cone(plane, face_windows, samples[j]);
+      if(windows) (*windows)[f] = face_windows;
+    });
+  }
 
 private:
   friend struct internal::Solver_from_source<Window_propagation_solver>;
@@ -504,6 +649,13 @@ private:
   {
     const auto maps = internal::mesh_maps(tm, np);
     internal::Window_propagation propagation(tm, maps.vpm, maps.vim, maps.fim);
+    propagate(tm, src, distance, maps, propagation);
+  }
+
+  template <class TriangleMesh, class VertexDistanceMap, class Maps>
+  static void propagate(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, VertexDistanceMap distance,
+                        const Maps& maps, internal::Window_propagation& propagation)
+  {
     std::vector<double> d;
     if(src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX)
       propagation.from_vertex(get(maps.vim, src.vertex), d);
@@ -517,6 +669,27 @@ private:
       propagation.from_point(p, face_indices, d);
     }
     for(auto v : vertices(tm)) put(distance, v, d[get(maps.vim, v)]);
+  }
+
+  // The cone at a sample: that of the window lowest there (its apex, or the
+  // end of its part of the entry edge that the way to the sample goes around).
+  static Face_cone sampled_cone(const internal::Face_plane& plane, const std::vector<Face_cone>& windows,
+                                const std::array<double, 3>& sample)
+  {
+    const auto x = plane.point(sample);
+    Face_cone best;
+    best.apex = sample; // no cone reaches the face: unreachable
+    best.offset = std::numeric_limits<double>::infinity();
+    double lowest = std::numeric_limits<double>::infinity();
+    for(const Face_cone& w : windows)
+    {
+      const auto path = internal::cone_path(plane, w, x);
+      if(!(path.second < lowest)) continue;
+      lowest = path.second;
+      best.apex = plane.barycentric(path.first);
+      best.offset = path.second - std::sqrt(CGAL::squared_distance(x, path.first));
+    }
+    return best;
   }
 };
 

@@ -18,8 +18,11 @@ namespace Geodesic_ridge {
 /// trusted to round-off (its solves steer E's growth by the exact test).
 /// `has_cones` is `Solver::has_cones` where declared, else `is_exact`: such a
 /// model offers the cone query of `Exact_solver`, which the cone field and the
-/// kink split use. A wrapper of `Exact_solver` declares `is_exact` and
-/// forwards that call; `Window_propagation_solver` is exact without cones.
+/// kink split use. `has_windows` is `Solver::has_windows` where declared, else
+/// `false`: such a model also gives every face's windows
+/// (`Window_propagation_solver`), and the cone field is their exact lower
+/// envelope. A wrapper of `Exact_solver` declares `is_exact` and forwards
+/// that call.
 template <class Solver, class = void>
 struct Geodesic_solver_traits
 {
@@ -27,6 +30,8 @@ struct Geodesic_solver_traits
   static constexpr bool is_exact = false;
   /// whether the model offers `Exact_solver`'s cone query
   static constexpr bool has_cones = false;
+  /// whether the model gives the windows of the faces (`Window_propagation_solver`)
+  static constexpr bool has_windows = false;
 };
 
 #ifndef DOXYGEN_RUNNING
@@ -41,6 +46,16 @@ struct Declared_cones<Solver, std::void_t<decltype(Solver::has_cones)> >
 {
   static constexpr bool value = Solver::has_cones;
 };
+template <class Solver, class = void>
+struct Declared_windows
+{
+  static constexpr bool value = false;
+};
+template <class Solver>
+struct Declared_windows<Solver, std::void_t<decltype(Solver::has_windows)> >
+{
+  static constexpr bool value = Solver::has_windows;
+};
 } // namespace internal
 
 template <class Solver>
@@ -48,6 +63,7 @@ struct Geodesic_solver_traits<Solver, std::void_t<decltype(Solver::is_exact)> >
 {
   static constexpr bool is_exact = Solver::is_exact;
   static constexpr bool has_cones = internal::Declared_cones<Solver>::value;
+  static constexpr bool has_windows = internal::Declared_windows<Solver>::value;
 };
 #endif
 
