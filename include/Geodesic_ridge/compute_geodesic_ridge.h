@@ -447,22 +447,13 @@ void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vecto
 }
 
 // Same, and the cones of the copies for which wanted(copy) is true (called by
-// the solver once `distance` is written), and with `windows` their windows;
-// the solver must offer cones (and windows, if asked for).
+// the solver once `distance` is written); the solver must offer cones.
 template <class Point, class Solver, class Wanted>
 void solve_on(const Extended_surface<Point>& E, const Solver& solver, std::vector<double>& distance,
-              std::vector<Face_cone>& cones, const Wanted& wanted, const std::vector<std::array<double, 3> >& samples,
-              std::vector<std::vector<Face_cone> >* windows)
+              std::vector<Face_cone>& cones, const Wanted& wanted, const std::vector<std::array<double, 3> >& samples)
 {
-  if constexpr(Geodesic_solver_traits<std::decay_t<Solver> >::has_windows)
+  if constexpr(Geodesic_solver_traits<std::decay_t<Solver> >::has_cones)
   {
-    if(E.source_is_vertex)
-      solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance), cones, wanted, samples, windows);
-    else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), cones, wanted, samples, windows);
-  }
-  else if constexpr(Geodesic_solver_traits<std::decay_t<Solver> >::has_cones)
-  {
-    if(windows) throw Invalid_parameter_error(std::string("the solver '") + solver.name() + "' gives no windows");
     if(E.source_is_vertex) solver(E.mesh, E.source_vertex, CGAL::make_property_map(distance), cones, wanted, samples);
     else solver(E.mesh, E.source_location, CGAL::make_property_map(distance), cones, wanted, samples);
   }
@@ -578,11 +569,11 @@ public:
                    double mean_edge, Extended_surface<Point>& E, std::vector<Face_copies>& face_copies,
                    std::vector<double>& vertex_distances, Geodesic_ridge_statistics& st, Timings& timings,
                    std::vector<Face_cone>* cones, const std::vector<std::array<double, 3> >& cone_samples,
-                   double cones_near_kinks_only, bool whole_faces, std::vector<std::vector<Face_cone> >* windows)
+                   double cones_near_kinks_only, bool whole_faces)
     : tm_(tm), src_(src), builder_(builder), solver_(solver), schedule_(schedule),
       E_(E), face_copies_(face_copies), vertex_distances_(vertex_distances), st_(st), timings_(timings),
       cones_(cones), cone_samples_(cone_samples), cones_near_kinks_only_(cones_near_kinks_only),
-      whole_faces_(whole_faces), windows_(windows),
+      whole_faces_(whole_faces),
       across_(builder.faces_across_edges()), fast_marching_slack_(0.02 * mean_edge), exact_slack_(1e-9 * mean_edge),
       reopen_margin_(1e-9 * mean_edge)
   {}
@@ -685,7 +676,7 @@ private:
       }
       return keep[copy] != 0;
     };
-    solve_on(E_, solver_, distance_, *cones_, wanted, cone_samples_, windows_);
+    solve_on(E_, solver_, distance_, *cones_, wanted, cone_samples_);
     ++st_.solves;
   }
 
@@ -697,7 +688,7 @@ private:
       solve_on(E_, solver_, distance, *cones_, [&](std::size_t copy) {
         if(keep.empty()) keep = cones_wanted(distance);
         return keep[copy] != 0;
-      }, cone_samples_, windows_);
+      }, cone_samples_);
     });
     ++st_.solves;
   }
@@ -706,11 +697,6 @@ private:
   // near kinks, or those of faces that have one near kinks
   std::vector<char> cones_wanted(const std::vector<double>& distance) const
   {
-    // the windows of every copy: a copy that the corner distances dominate
-    // can still be lowest inside the face (a distance is convex along a
-    // window, its linear interpolation is not: armadillo_2k from vertex 0,
-    // 0.5 % too long at a point of face 1599 with the undominated copies only)
-    if(windows_) return std::vector<char>(E_.mesh.number_of_faces(), 1);
     std::vector<char> keep(E_.mesh.number_of_faces(), 0);
     for(const Face_copies& fc : face_copies_)
       for(std::size_t c : fc.copies) keep[c] = 1;
@@ -788,7 +774,6 @@ private:
   const std::vector<std::array<double, 3> >& cone_samples_;
   const double cones_near_kinks_only_;
   const bool whole_faces_;
-  std::vector<std::vector<Face_cone> >* const windows_; // per copy, with a solver that gives them
   const Faces_across& across_; // the builder's
   // a copy that wins on the border by less than this is no winner: noise
   // between neighbouring fronts (fast marching), round-off (the exact solver)
@@ -956,36 +941,50 @@ private:
     Extension_growth<TriangleMesh, Builder, Solver, Point> growth(
         tm_, src_, builder, solver_, schedule, mean_edge_, E_, face_copies_, result_.vertex_distances, st_,
         timings_, options_.cone_ridge || split_at_kinks() ? &copy_cones_ : nullptr, cone_samples(),
-        cone_field ? 0 : kink_filter_share * options_.kink_angle, options_.cone_ridge,
-        cone_field && solver_has_windows ? &copy_windows_ : nullptr);
+        cone_field ? 0 : kink_filter_share * options_.kink_angle, options_.cone_ridge);
     growth.run();
     copy_corners_ = growth.take_corner_distances();
     st_.extended_surface = E_.statistics;
     if(!options_.cone_ridge) return;
     // per face of M, the cones of its undominated copies, where they were read
-    std::vector<std::vector<Face_cone> >& cones = cone_field ? result_.cones : face_cones_;
+    const bool windows = cone_field && solver_has_windows;
+    std::vector<std::vector<Face_cone> >& cones = cone_field && !windows ? result_.cones : face_cones_;
     cones.assign(num_faces(tm_), {});
-    if(cone_field && solver_has_windows)
-    {
-      // the windows of every copy of each face, numbered by face
-      std::vector<std::uint32_t> copies(num_faces(tm_), 0);
-      for(std::size_t c = 0; c < copy_windows_.size(); ++c)
-      {
-        if(copy_windows_[c].empty()) continue;
-        const std::size_t f = E_.original_face[c];
-        for(Face_cone w : copy_windows_[c])
-        {
-          w.copy = copies[f];
-          cones[f].push_back(w);
-        }
-        ++copies[f];
-        std::vector<Face_cone>().swap(copy_windows_[c]); // the peak of memory: one of the two at a time
-      }
-      std::vector<std::vector<Face_cone> >().swap(copy_windows_);
-      return;
-    }
     for(std::size_t f = 0; f < face_copies_.size(); ++f)
       for(std::size_t c : face_copies_[f].copies) append_sampled_cones(c, cones[f]);
+    if(windows) timings_.time("cone_field", [&] { windows_on_mesh(); });
+  }
+
+  // The cone field of a solver with windows: its windows on M, whose lower
+  // envelope is the distance on M, each its own copy (`locate()` names the
+  // window). Not E's: E holds every shortest path to a vertex, not to every
+  // point (armadillo_2k from vertex 0: 3e-3 too long at a point of face 1492,
+  // whose shortest path enters through an edge of E's border).
+  void windows_on_mesh()
+  {
+    if constexpr(solver_has_windows)
+    {
+      std::vector<double> distance(num_vertices(tm_));
+      std::vector<Face_cone> no_samples;
+      const auto np = CGAL::parameters::vertex_point_map(maps_.vpm).vertex_index_map(maps_.vim).face_index_map(maps_.fim);
+      const auto map = boost::make_iterator_property_map(distance.begin(), maps_.vim);
+      auto every = [](std::size_t) { return true; };
+      const std::vector<std::array<double, 3> > samples;
+      if(src_.kind == Geodesic_source<TriangleMesh>::ON_VERTEX)
+        solver_(tm_, src_.vertex, map, no_samples, every, samples, &result_.cones, np);
+      else solver_(tm_, src_.location, map, no_samples, every, samples, &result_.cones, np);
+      for(std::vector<Face_cone>& face : result_.cones)
+      {
+        for(std::size_t i = 0; i < face.size(); ++i) face[i].copy = static_cast<std::uint32_t>(i);
+        if(face.empty()) // another connected component: unreachable
+        {
+          face.emplace_back();
+          face.back().apex = {{1, 0, 0}};
+          face.back().offset = std::numeric_limits<double>::infinity();
+          face.back().copy = 0;
+        }
+      }
+    }
   }
 
   // copy c's cones at the samples, if the solver read them
@@ -1096,7 +1095,8 @@ private:
   void trace_cones()
   {
     result_.cone_polylines = trace_cone_ridge(tm_, maps_.vpm, maps_.vim, maps_.fim, result_.polylines,
-                                              options_.field == Field::cone ? result_.cones : face_cones_,
+                                              options_.field == Field::cone && !solver_has_windows ? result_.cones
+                                                                                                   : face_cones_,
                                               cone_samples(), options_.cone_ridge_tolerance * mean_edge_, mean_edge_,
                                               st_.cone_ridge);
     st_.cone_ridge_traced = true;
@@ -1118,7 +1118,6 @@ private:
   Extended_surface<Point> E_;
   std::vector<Face_copies> face_copies_;
   std::vector<Face_cone> copy_cones_;
-  std::vector<std::vector<Face_cone> > copy_windows_; // per copy of E, with the cone field of a solver with windows
   std::vector<std::vector<Face_cone> > face_cones_; // for the cone ridge without the cone field
   std::vector<std::array<double, 3> > copy_corners_; // per copy of E, at the last solve
 };

@@ -186,7 +186,8 @@ public:
     for(std::size_t f = 0; f < nf; ++f)
     {
       cones.clear();
-      for(std::size_t i = first[f]; i < first[f + 1]; ++i) cones.push_back(face_cone(records_[order[i]]));
+      for(std::size_t i = first[f]; i < first[f + 1]; ++i)
+        if(consistent(records_[order[i]])) cones.push_back(face_cone(records_[order[i]]));
       out(f, cones);
     }
   }
@@ -226,6 +227,32 @@ private:
     if(keep_cones_ && (*keep_cones_)[r.frame / 3]) records_.push_back(r);
   }
 
+  // Whether a window agrees with the distances at its face's corners: the
+  // distance is 1-Lipschitz, so at an end e of the window d(e) >= d(c) -
+  // |e - c| for every corner c. A window that passed a saddle vertex on the
+  // wrong side by round-off carries an unfolding into the vertex's shadow,
+  // too short there (bunny_7k from vertex 1742: a window 1e-12 of an edge
+  // wide at a corner of face 4148, 6e-7 below that corner's distance, whose
+  // way around its end made the cone field 5e-6 too short inside the face).
+  bool consistent(const Cone_record& r) const
+  {
+    if(!r.window) return true;
+    const std::size_t h = r.frame;
+    const Vec2 corner[3] = {Vec2{0., 0.}, Vec2{length_[h], 0.}, apex_[h]};
+    const std::size_t index[3] = {corner_[h], corner_[next(h)], corner_[prev(h)]};
+    for(double t : {r.b0, r.b1})
+    {
+      const Vec2 e{t, 0.};
+      const double at_e = r.sigma + distance2(r.image, e);
+      for(int k = 0; k < 3; ++k)
+      {
+        const double bound = distance_[index[k]] - distance2(e, corner[k]);
+        if(at_e < bound - 1e-12 * (distance_[index[k]] + length_[h])) return false;
+      }
+    }
+    return true;
+  }
+
   // a record as a Face_cone of its face (barycentric in corner order)
   Face_cone face_cone(const Cone_record& r) const
   {
@@ -236,6 +263,20 @@ private:
     cone.apex[(k + 1) % 3] = (r.image.x - cone.apex[(k + 2) % 3] * apex_[h].x) / length_[h];
     cone.apex[k] = 1 - cone.apex[(k + 1) % 3] - cone.apex[(k + 2) % 3];
     cone.offset = r.sigma;
+    if(r.window && r.b1 - r.b0 <= 1e-8 * length_[h])
+    {
+      // A window narrower than round-off allows, at a vertex: which side of
+      // the vertex its straight ways pass is noise (teddy_3k from vertex 159:
+      // one 2e-12 of an edge wide at a convex corner of face 2231 reached
+      // points beyond the corner's ray 3e-6 too short). Its paths around its
+      // middle instead: as long to within the square of its width.
+      const double t = 0.5 * (r.b0 + r.b1);
+      cone.apex = {{0., 0., 0.}};
+      cone.apex[k] = 1 - t / length_[h];
+      cone.apex[(k + 1) % 3] = t / length_[h];
+      cone.offset = r.sigma + distance2(r.image, Vec2{t, 0.});
+      return cone;
+    }
     if(r.window)
     {
       cone.entry = static_cast<std::int8_t>(k);
@@ -602,13 +643,16 @@ struct Window_propagation_solver : internal::Solver_from_source<Window_propagati
   /// Same, and with `windows` (if not null), `(*windows)[i]` the windows of
   /// every wanted face i (`Face_cone::entry` set; corners that paths bend
   /// around and the source as cones straight to every point of the face):
-  /// the lowest of their paths at a point of the face is its distance.
-  template <class TriangleMesh, class Source, class VertexDistanceMap, class Wanted>
+  /// the lowest of their paths at a point of the face is its distance. The
+  /// named parameters `vertex_point_map`, `vertex_index_map` and
+  /// `face_index_map` give the geometry and the indices.
+  template <class TriangleMesh, class Source, class VertexDistanceMap, class Wanted,
+            class NamedParameters = CGAL::parameters::Default_named_parameters>
   void operator()(const TriangleMesh& tm, const Source& s, VertexDistanceMap distance, std::vector<Face_cone>& cones,
                   const Wanted& wanted, const std::vector<std::array<double, 3> >& samples,
-                  std::vector<std::vector<Face_cone> >* windows) const
+                  std::vector<std::vector<Face_cone> >* windows,
+                  const NamedParameters& np = CGAL::parameters::default_values()) const
   {
-    const auto np = CGAL::parameters::default_values();
     const auto maps = internal::mesh_maps(tm, np);
     const auto src = make_source(tm, s, np);
     internal::Window_propagation propagation(tm, maps.vpm, maps.vim, maps.fim);
