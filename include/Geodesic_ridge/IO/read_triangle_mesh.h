@@ -35,7 +35,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <new>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -517,11 +519,22 @@ private:
         if(!(words >> e.name >> e.count) || e.count < 0) return; // (CGAL's reader says what is wrong)
         elements.push_back(e);
       }
-      else if(keyword == "property" && !elements.empty())
+      else if(keyword == "property" && elements.empty())
+        // CGAL's reader adds a property to its last element, and has none
+        // yet: it would read out of bounds (found by fuzz/)
+        file_error(filename_, "PLY header: a property before any element (line " + std::to_string(lines + 1) + ")");
+      else if(keyword == "property")
       {
         std::string type;
         words >> type;
         if(type == "list") words >> type; // the count's type: at least the count is there
+        else if(std::string name; ply::is_vertex_element(elements.back().name) && words >> name &&
+                (name == "x" || name == "y" || name == "z") && type != "float" && type != "float32" &&
+                type != "double" && type != "float64")
+          // CGAL's point reader asserts (and without assertions dereferences
+          // null) on an integer coordinate (found by fuzz/)
+          file_error(filename_, "PLY header: vertex coordinate '" + name + "' is '" + type +
+                                "', not float or double (line " + std::to_string(lines + 1) + ")");
         const int bytes = scalar_bytes(type);
         if(bytes == 0) return;
         elements.back().least += binary ? bytes : 2;
@@ -610,7 +623,21 @@ void read_polygon_soup_or_throw(const std::string& filename, std::vector<Point>&
     return;
   // verbose(false): some of CGAL's readers print to std::cerr by default; we
   // report through the exception only.
-  if(CGAL::IO::read_polygon_soup(filename, points, polygons, CGAL::parameters::verbose(false)))
+  bool read = false;
+  try
+  {
+    read = CGAL::IO::read_polygon_soup(filename, points, polygons, CGAL::parameters::verbose(false));
+  }
+  catch(const std::length_error&)
+  {
+    // CGAL's OFF scanner resizes a face to its announced size, which a
+    // negative count ("-8") turns into a huge size_t (found by fuzz/): a
+    // malformed file, diagnosed below like any other that CGAL refuses
+  }
+  catch(const std::bad_alloc&)
+  {
+  }
+  if(read)
     return; // CGAL's OFF and PLY readers fail on a truncated file (checked), so the soup is complete.
 
   // CGAL failed: explain why as precisely as we can. On failure its soup may hold
