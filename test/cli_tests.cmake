@@ -131,6 +131,16 @@ add_test(NAME cli.field.cone
 add_test(NAME cli.field.cone_vtp
          COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off -DDATA=${B} -DOUT=${OUTDIR}/cone_vtp
                  "-DEXTRA=--solver;vtp;--field;cone" -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_field_outputs.cmake)
+# any scale (issue 41): the torus scaled by 1e-300 and 1e300 gives every
+# output, the same distances and a ridge of the right topology
+foreach(exponent -300 300)
+  foreach(solver exact fmm)
+    add_test(NAME cli.scale.${solver}.e${exponent}
+             COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off -DDATA=${B} -DEXPONENT=${exponent}
+                     -DGENUS=1 -DOUT=${OUTDIR}/scale_${solver} "-DEXTRA=--solver;${solver}"
+                     -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_any_scale.cmake)
+  endforeach()
+endforeach()
 cli_failure(cone_with_fmm         "the cone field needs a solver with cones: exact or vtp" ${CLI} ${D}/torus_1k.off --source-vertex 0 --solver fmm --field cone)
 # without the exact solver's corner fallback samples (parameters::corner_fallback(false))
 add_test(NAME cli.ridge.no_corner_fallback.bunny_1k

@@ -69,14 +69,6 @@ int genus(const Mesh& m)
   return static_cast<int>((2 - chi) / 2);
 }
 
-double bbox_diagonal(const Mesh& m)
-{
-  CGAL::Bbox_3 b;
-  for(auto v : m.vertices()) b += m.point(v).bbox();
-  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
-                   CGAL::square(b.zmax() - b.zmin()));
-}
-
 // Runs the pipeline; an Algorithm_error is reported as a failed check (with
 // its message) and gives no result.
 template <class Source>

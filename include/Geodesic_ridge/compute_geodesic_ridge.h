@@ -1132,6 +1132,37 @@ auto ridge_curve_impl(const TriangleMesh& tm, const Geodesic_source<TriangleMesh
   return Geodesic_ridge_pipeline(tm, src, np, solver, mesh_maps(tm, np), angles).run();
 }
 
+// Everything the pipeline computed on the unit mesh, in the input's units:
+// points, distances, cone offsets, stage 1's lengths and areas. A point is
+// mapped alone, so points that are one stay one.
+template <class TriangleMesh, class Point>
+void map_from_unit(Ridge_curve<TriangleMesh, Point>& rc, const Normalization& n)
+{
+  if(n.identity()) return;
+  for(auto* lines : {&rc.polylines, &rc.cone_polylines})
+    for(auto& line : *lines)
+      for(auto& p : line) p.point = n.from_unit(p.point);
+  for(auto& cells : rc.regions)
+    for(auto& cell : cells)
+      for(double& d : cell.field) d = n.length_from_unit(d);
+  for(double& d : rc.vertex_distances) d = n.length_from_unit(d);
+  for(auto& cones : rc.cones)
+    for(Face_cone& c : cones) c.offset = n.length_from_unit(c.offset);
+  rc.statistics.cone_ridge.tolerance = n.length_from_unit(rc.statistics.cone_ridge.tolerance);
+  map_from_unit(rc.rough_cut_locus, n);
+}
+
+// The public entry: the pipeline on the unit mesh (internal/normalization.h).
+template <class TriangleMesh, class SourceLocation, class NamedParameters>
+auto ridge_curve_of(const TriangleMesh& tm, const SourceLocation& source, const NamedParameters& np)
+{
+  Normalization n;
+  const auto unit_np = unit_parameters(tm, np, n);
+  auto rc = ridge_curve_impl(tm, checked_source(tm, source, unit_np), unit_np);
+  map_from_unit(rc, n);
+  return rc;
+}
+
 } // namespace internal
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -1292,7 +1323,7 @@ auto compute_ridge_curve(const TriangleMesh& tm,
                          typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::ridge_curve_impl(tm, internal::checked_source(tm, source, np), np);
+  return internal::ridge_curve_of(tm, source, np);
 }
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -1308,7 +1339,7 @@ auto compute_ridge_curve(const TriangleMesh& tm,
                                          std::array<FT, 3> >& source,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::ridge_curve_impl(tm, internal::checked_source(tm, source, np), np);
+  return internal::ridge_curve_of(tm, source, np);
 }
 
 /// \ingroup PkgGeodesicRidgeRef

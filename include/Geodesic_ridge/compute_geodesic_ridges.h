@@ -157,13 +157,21 @@ OutputIterator compute_ridge_curves(const TriangleMesh& tm, const SourceRange& s
   using CGAL::parameters::get_parameter;
   internal::get_tolerance(np);
   internal::pipeline_options(np, choose_parameter(get_parameter(np, internal_np::solver_t()), Exact_solver()));
-  validate_triangle_mesh(tm, np);
+  // on the unit mesh, as compute_ridge_curve() (internal/normalization.h)
+  internal::Normalization n;
+  const auto unit_np = internal::unit_parameters(tm, np, n);
+  validate_triangle_mesh(tm, unit_np);
   // the index maps are initialized here, before any thread reads them
-  const auto maps = internal::mesh_maps(tm, np);
-  const auto made = internal::make_sources(tm, sources, np);
+  const auto maps = internal::mesh_maps(tm, unit_np);
+  const auto made = internal::make_sources(tm, sources, unit_np);
   const internal::Corner_angles angles = internal::corner_angles(tm, maps.vpm, maps.vim, maps.fim);
   internal::compute_in_order<ConcurrencyTag>(
-      made.size(), [&](std::size_t i) { return internal::ridge_curve_impl(tm, made[i], np, &angles); },
+      made.size(),
+      [&](std::size_t i) {
+        auto rc = internal::ridge_curve_impl(tm, made[i], unit_np, &angles);
+        internal::map_from_unit(rc, n);
+        return rc;
+      },
       [&](auto&& result) { *out++ = std::move(result); });
   return out;
 }

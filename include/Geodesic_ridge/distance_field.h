@@ -17,6 +17,7 @@
 #include <Geodesic_ridge/cone_ridge.h>
 #include <Geodesic_ridge/exceptions.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
+#include <Geodesic_ridge/internal/normalization.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -79,13 +80,24 @@ public:
     set_cells(regions);
     if(cones.size() != regions.size() || corners.size() != regions.size())
       throw Invalid_parameter_error("the cones are not those of the ridge curve");
+    // the cones are evaluated on the unit mesh (internal/normalization.h):
+    // their lengths square coordinates
+    internal::Normalization_of_points all_corners;
+    for(const auto& c : corners)
+      for(const Point_3& p : c) all_corners.add(p);
+    unit_ = all_corners.normalization();
     first_cone_.push_back(0);
     for(std::size_t f = 0; f < cones.size(); ++f)
     {
       if(cones[f].empty()) throw Invalid_parameter_error("a face has no cone");
-      cones_.insert(cones_.end(), cones[f].begin(), cones[f].end());
+      for(Face_cone c : cones[f])
+      {
+        c.offset = unit_.length_to_unit(c.offset);
+        cones_.push_back(c);
+      }
       first_cone_.push_back(cones_.size());
-      planes_.emplace_back(corners[f]);
+      planes_.emplace_back(std::array<Point_3, 3>{
+          {unit_.to_unit(corners[f][0]), unit_.to_unit(corners[f][1]), unit_.to_unit(corners[f][2])}});
     }
   }
 
@@ -196,7 +208,9 @@ private:
   std::pair<std::size_t, double> lowest_cone(std::size_t f, const std::array<double, 3>& b) const
   {
     const internal::Face_cone_field cones(planes_[f], cones_.data() + first_cone_[f], first_cone_[f + 1] - first_cone_[f]);
-    return cones.lowest(planes_[f].point(b));
+    std::pair<std::size_t, double> lowest = cones.lowest(planes_[f].point(b));
+    lowest.second = unit_.length_from_unit(lowest.second);
+    return lowest;
   }
 
   std::vector<std::size_t> first_cell_;        // per face index, into fields_
@@ -204,6 +218,7 @@ private:
   std::vector<std::size_t> first_cone_;        // per face index, into cones_ (cone field only)
   std::vector<Face_cone> cones_;
   std::vector<internal::Face_plane> planes_;    // per face index: the face in its plane (cone field only)
+  internal::Normalization unit_;                // of the planes and cones' offsets (cone field only)
   std::vector<double> vertex_distances_;
   VertexIndexMap vim_;
   FaceIndexMap fim_;

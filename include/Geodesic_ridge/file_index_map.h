@@ -9,6 +9,7 @@
 
 #include <Geodesic_ridge/connected_component.h>
 #include <Geodesic_ridge/repair.h>
+#include <Geodesic_ridge/internal/normalization.h>
 
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -22,6 +23,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -214,12 +216,20 @@ public:
   {
     std::optional<vertex_descriptor> best;
     double best_area = -1;
+    // the areas on the copies' faces moved to a unit size (at 1e160 an area
+    // is not a double)
+    const auto vpm = get(CGAL::vertex_point, tm);
+    internal::Normalization_of_points around;
+    for(vertex_descriptor v : vertices(file_vertex))
+      for(vertex_descriptor w : CGAL::vertices_around_target(halfedge(v, tm), tm)) around.add(get(vpm, w));
+    const internal::Normalized_point_map<std::decay_t<decltype(vpm)> > unit_vpm{vpm, around.normalization()};
     for(vertex_descriptor v : vertices(file_vertex))
     {
       double area = 0;
       for(face_descriptor f : CGAL::faces_around_target(halfedge(v, tm), tm))
         if(f != GT::null_face())
-          area += CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(f, tm));
+          area += CGAL::to_double(
+              CGAL::Polygon_mesh_processing::face_area(f, tm, CGAL::parameters::vertex_point_map(unit_vpm)));
       if(area > best_area)
       {
         best_area = area;
@@ -316,16 +326,25 @@ private:
   {
     using Mesh_point = typename boost::property_traits<
       typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
-    const Mesh_point q(p.x(), p.y(), p.z());
     std::optional<Face_location> best;
     const auto vpm = get(CGAL::vertex_point, tm);
+    // located among the candidates moved to a unit size (at 1e-160 a squared
+    // length is 0): the same coordinates at any scale
+    internal::Normalization_of_points around;
+    around.add(p);
+    for(face_descriptor f : candidates)
+      for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm)) around.add(get(vpm, v));
+    const internal::Normalization unit = around.normalization();
+    const internal::Normalized_point_map<std::decay_t<decltype(vpm)> > unit_vpm{vpm, unit};
+    const Mesh_point q = unit.to_unit(Mesh_point(p.x(), p.y(), p.z()));
     for(face_descriptor f : candidates)
     {
       const auto h = halfedge(f, tm);
-      if(!internal::repair::has_barycentric_coordinates(get(vpm, source(h, tm)), get(vpm, target(h, tm)),
-                                                        get(vpm, target(next(h, tm), tm))))
+      if(!internal::repair::has_barycentric_coordinates(get(unit_vpm, source(h, tm)), get(unit_vpm, target(h, tm)),
+                                                        get(unit_vpm, target(next(h, tm), tm))))
         continue; // a degenerate face holds no point
-      const auto loc = CGAL::Polygon_mesh_processing::locate_in_face(q, f, tm);
+      const auto loc =
+          CGAL::Polygon_mesh_processing::locate_in_face(q, f, tm, CGAL::parameters::vertex_point_map(unit_vpm));
       const Face_location l(f, {{CGAL::to_double(loc.second[0]), CGAL::to_double(loc.second[1]),
                                  CGAL::to_double(loc.second[2])}});
       if(!best || smallest(l.second) > smallest(best->second))

@@ -15,6 +15,7 @@
 #include <Geodesic_ridge/internal/edge_graph_distances.h>
 #include <Geodesic_ridge/internal/graph_polylines.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
+#include <Geodesic_ridge/internal/normalization.h>
 #include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/mesh_validation.h>
 #include <Geodesic_ridge/parameters.h>
@@ -1062,6 +1063,29 @@ rough_cut_locus_impl(const TriangleMesh& tm, Geodesic_source<TriangleMesh> src,
   return Builder(tm, src, mesh_maps(tm, np), options).run(field);
 }
 
+// Stage 1's lengths and areas, computed on the unit mesh, in the input's units.
+template <class TriangleMesh>
+void map_from_unit(Rough_cut_locus<TriangleMesh>& r, const Normalization& n)
+{
+  if(n.identity()) return;
+  r.total_area = n.area_from_unit(r.total_area);
+  for(double& s : r.significance) s = n.area_from_unit(s);
+  for(double& d : r.distance) d = n.length_from_unit(d);
+  for(auto& seed : r.source.seeds) seed.second = n.length_from_unit(seed.second);
+}
+
+// The public entry: stage 1 on the unit mesh (internal/normalization.h).
+template <class TriangleMesh, class SourceLocation, class NamedParameters>
+Rough_cut_locus<TriangleMesh> rough_cut_locus_of(const TriangleMesh& tm, const SourceLocation& source,
+                                                 const NamedParameters& np)
+{
+  Normalization n;
+  const auto unit_np = unit_parameters(tm, np, n);
+  Rough_cut_locus<TriangleMesh> r = rough_cut_locus_impl(tm, checked_source(tm, source, unit_np), unit_np);
+  map_from_unit(r, n);
+  return r;
+}
+
 } // namespace internal
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -1131,7 +1155,7 @@ compute_rough_cut_locus(const TriangleMesh& tm,
                         typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::rough_cut_locus_impl(tm, internal::checked_source(tm, source, np), np);
+  return internal::rough_cut_locus_of(tm, source, np);
 }
 
 /// \ingroup PkgGeodesicRidgeRef
@@ -1151,7 +1175,7 @@ compute_rough_cut_locus(const TriangleMesh& tm,
                                         std::array<FT, 3> >& source,
                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::rough_cut_locus_impl(tm, internal::checked_source(tm, source, np), np);
+  return internal::rough_cut_locus_of(tm, source, np);
 }
 
 /// \ingroup PkgGeodesicRidgeRef

@@ -9,11 +9,13 @@
 
 #include <Geodesic_ridge/exceptions.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
+#include <Geodesic_ridge/internal/normalization.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -71,6 +73,7 @@ double distance_between(const VPM& vpm, const Key& a, const Key& b)
 {
   return std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, a), get(vpm, b))));
 }
+
 
 } // namespace internal
 
@@ -173,9 +176,7 @@ make_face_source(const TriangleMesh& tm,
   s.location.second = w;
   const auto o = CGAL::ORIGIN;
   const auto p = o + ((get(vpm, c[0]) - o) * w[0] + (get(vpm, c[1]) - o) * w[1] + (get(vpm, c[2]) - o) * w[2]);
-  auto dist_to = [&](vertex_descriptor v) {
-    return std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, v), p)));
-  };
+  auto dist_to = [&](vertex_descriptor v) { return internal::length_at_any_scale(get(vpm, v) - p); };
   s.faces.push_back(f);
   for(int i = 0; i < 3; ++i) s.seeds.emplace_back(c[i], dist_to(c[i]));
   if(zeros == 0)

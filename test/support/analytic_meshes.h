@@ -90,6 +90,14 @@ inline Mesh mesh_from_soup(const std::vector<Point_3>& points,
   return m;
 }
 
+inline double bbox_diagonal(const Mesh& m)
+{
+  CGAL::Bbox_3 b;
+  for(auto v : m.vertices()) b += m.point(v).bbox();
+  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
+                   CGAL::square(b.zmax() - b.zmin()));
+}
+
 inline double mean_edge_length(const Mesh& m)
 {
   double s = 0;

@@ -13,6 +13,8 @@
 #ifndef GEODESIC_RIDGE_INTERNAL_COINCIDENT_POINTS_H
 #define GEODESIC_RIDGE_INTERNAL_COINCIDENT_POINTS_H
 
+#include <Geodesic_ridge/internal/normalization.h>
+
 #include <CGAL/Bbox_3.h>
 
 #include <algorithm>
@@ -35,11 +37,14 @@ namespace internal {
 /// written polylines may assume.
 constexpr double coincident_fraction = 1e-10;
 
+
 /// the absolute tolerance of `coincident_fraction` for a box
 inline double coincident_tolerance(const CGAL::Bbox_3& box)
 {
-  const double dx = box.xmax() - box.xmin(), dy = box.ymax() - box.ymin(), dz = box.zmax() - box.zmin();
-  return coincident_fraction * std::sqrt(dx * dx + dy * dy + dz * dz);
+  // halves and no squares: right at any scale (a squared 1e-300 is 0, a
+  // squared 1e300 infinite)
+  return 2 * coincident_fraction * length_at_any_scale({{box.xmax() / 2 - box.xmin() / 2, box.ymax() / 2 - box.ymin() / 2,
+                                             box.zmax() / 2 - box.zmin() / 2}});
 }
 
 /// the absolute tolerance of `coincident_fraction` for the vertices of `tm`
@@ -93,7 +98,7 @@ public:
           const auto it = grid_.find(key({{c[0] + dx, c[1] + dy, c[2] + dz}}));
           if(it == grid_.end()) continue;
           for(std::size_t id : it->second)
-            if(squared_distance(points_[id], p) <= tolerance_ * tolerance_ && visit(id)) return;
+            if(within_tolerance(points_[id], p) && visit(id)) return;
         }
   }
 
@@ -109,11 +114,9 @@ public:
   static constexpr std::size_t none = std::size_t(-1);
 
 private:
-  static double squared_distance(const std::array<double, 3>& a, const std::array<double, 3>& b)
+  bool within_tolerance(const std::array<double, 3>& a, const std::array<double, 3>& b) const
   {
-    double d = 0;
-    for(int k = 0; k < 3; ++k) d += (a[k] - b[k]) * (a[k] - b[k]);
-    return d;
+    return length_at_any_scale({{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}) <= tolerance_;
   }
   std::array<std::int64_t, 3> cell(const std::array<double, 3>& p) const
   {
