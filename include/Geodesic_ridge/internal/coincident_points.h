@@ -37,14 +37,14 @@ namespace internal {
 /// written polylines may assume.
 constexpr double coincident_fraction = 1e-10;
 
-
 /// the absolute tolerance of `coincident_fraction` for a box
 inline double coincident_tolerance(const CGAL::Bbox_3& box)
 {
   // halves and no squares: right at any scale (a squared 1e-300 is 0, a
   // squared 1e300 infinite)
-  return 2 * coincident_fraction * length_at_any_scale({{box.xmax() / 2 - box.xmin() / 2, box.ymax() / 2 - box.ymin() / 2,
-                                             box.zmax() / 2 - box.zmin() / 2}});
+  return 2 * coincident_fraction *
+         length_at_any_scale(
+             {{box.xmax() / 2 - box.xmin() / 2, box.ymax() / 2 - box.ymin() / 2, box.zmax() / 2 - box.zmin() / 2}});
 }
 
 /// the absolute tolerance of `coincident_fraction` for the vertices of `tm`
