@@ -979,7 +979,8 @@ void write_picture(const std::string& filename, const Mesh& mesh, const Ridge& r
   // the source: a small cross
   const Point_3 src = PMP::construct_point(ridge.rough_cut_locus.source.location, mesh);
   const auto box = CGAL::bounding_box(mesh.points().begin(), mesh.points().end());
-  const double arm = 0.015 * std::sqrt(CGAL::squared_distance(box.min(), box.max()));
+  // (hypot: no square leaves double's range, at 1e-300 or 1e300)
+  const double arm = 0.015 * std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
   for(int k = 0; k < 3; ++k)
   {
     const double dx = k == 0 ? arm : 0, dy = k == 1 ? arm : 0, dz = k == 2 ? arm : 0;

@@ -136,7 +136,8 @@ add_test(NAME cli.field.cone_vtp
 foreach(exponent -300 300)
   foreach(solver exact fmm)
     add_test(NAME cli.scale.${solver}.e${exponent}
-             COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DMESH=${D}/torus_1k.off -DDATA=${B} -DEXPONENT=${exponent}
+             COMMAND ${CMAKE_COMMAND} -DCLI=${CLI} -DCHECK=$<TARGET_FILE:png_check> -DMESH=${D}/torus_1k.off
+                     -DDATA=${B} -DEXPONENT=${exponent}
                      -DGENUS=1 -DOUT=${OUTDIR}/scale_${solver} "-DEXTRA=--solver;${solver}"
                      -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/expect_any_scale.cmake)
   endforeach()

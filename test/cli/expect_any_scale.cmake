@@ -2,9 +2,10 @@
 # The mesh scaled by 10^EXPONENT (written by appending "e<EXPONENT>" to every
 # coordinate of MESH, whose coordinates have no exponent: exact decimal
 # scaling, no arithmetic here) gives what the mesh gives: every output
-# written, the query distances the same in their first 9 digits, the stats'
-# ridge one component without cycles (genus 0) or with 2g cycles.
-#   cmake -DCLI=prog -DMESH=torus_1k.off -DDATA=test/cli/data -DEXPONENT=-300 -DGENUS=1 -DOUT=dir [-DEXTRA=...] -P expect_any_scale.cmake
+# written, the picture showing the surface, the ridge and the source (decoded
+# by png_check), the query distances the same in their first 9 digits, the
+# stats' ridge one component without cycles (genus 0) or with 2g cycles.
+#   cmake -DCLI=prog -DCHECK=png_check -DMESH=torus_1k.off -DDATA=test/cli/data -DEXPONENT=-300 -DGENUS=1 -DOUT=dir [-DEXTRA=...] -P expect_any_scale.cmake
 file(MAKE_DIRECTORY ${OUT})
 get_filename_component(name ${MESH} NAME_WE)
 set(scaled ${OUT}/${name}_e${EXPONENT}.off)
@@ -48,6 +49,10 @@ foreach(run plain scaled)
       message(FATAL_ERROR "${run}: ${f} is empty")
     endif()
   endforeach()
+  execute_process(COMMAND ${CHECK} ${prefix}.png 1200 600 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${run}: the picture: ${out}${err}")
+  endif()
   file(READ ${prefix}_stats.json stats)
   string(JSON components GET "${stats}" statistics ridge components)
   string(JSON cycles GET "${stats}" statistics ridge cycles)

@@ -9,6 +9,7 @@
 #define GEODESIC_RIDGE_IO_PNG_H
 
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/normalization.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Bbox_3.h>
@@ -84,6 +85,11 @@ public:
     : tm_(tm), vpm_(vpm), size_(size), colour_(colour), rgb_(static_cast<std::size_t>(3 * 2 * size * size), 255),
       depth_(static_cast<std::size_t>(2 * size * size), std::numeric_limits<double>::infinity())
   {
+    // drawn on the mesh moved and scaled to a unit size (at 1e-300 a squared
+    // length is 0, at 1e300 infinite): the same picture at any scale
+    internal::Normalization_of_points all;
+    for(auto v : vertices(tm)) all.add(get(vpm, v));
+    unit_ = all.normalization();
     CGAL::Bbox_3 box;
     for(auto v : vertices(tm)) box += point(get(vpm, v)).bbox();
     center_ = Point_3((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2, (box.zmin() + box.zmax()) / 2);
@@ -111,9 +117,9 @@ public:
 
 private:
   template <class P>
-  static Point_3 point(const P& p)
+  Point_3 point(const P& p) const
   {
-    return Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    return unit_.to_unit(Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
   }
 
   // screen position and depth
@@ -194,6 +200,7 @@ private:
   const Colour& colour_;
   std::vector<unsigned char> rgb_;
   std::vector<double> depth_;
+  internal::Normalization unit_;
   Point_3 center_;
   double radius_ = 1;
   Vector_3 look_, right_, up_;

@@ -63,21 +63,30 @@ struct Normalization
   // the number is
   double area_from_unit(double a) const { return std::ldexp(std::ldexp(a, exponent), exponent); }
 
+  // The factor 2^e in two halves: a mesh of subnormal size needs 2^1073,
+  // beyond double's range in one factor. Exact either way.
+  template <class FT>
+  static FT times_power_of_two(const FT& x, int e)
+  {
+    return x * FT(std::ldexp(1.0, e / 2)) * FT(std::ldexp(1.0, e - e / 2));
+  }
+
   template <class Point>
   Point to_unit(const Point& p) const
   {
     if(identity()) return p;
     typedef typename CGAL::Kernel_traits<Point>::Kernel::FT FT;
-    const FT s(std::ldexp(1.0, -exponent));
-    return Point((p.x() - FT(centre[0])) * s, (p.y() - FT(centre[1])) * s, (p.z() - FT(centre[2])) * s);
+    return Point(times_power_of_two(p.x() - FT(centre[0]), -exponent),
+                 times_power_of_two(p.y() - FT(centre[1]), -exponent),
+                 times_power_of_two(p.z() - FT(centre[2]), -exponent));
   }
   template <class Point>
   Point from_unit(const Point& q) const
   {
     if(identity()) return q;
     typedef typename CGAL::Kernel_traits<Point>::Kernel::FT FT;
-    const FT s(std::ldexp(1.0, exponent));
-    return Point(q.x() * s + FT(centre[0]), q.y() * s + FT(centre[1]), q.z() * s + FT(centre[2]));
+    return Point(times_power_of_two(q.x(), exponent) + FT(centre[0]), times_power_of_two(q.y(), exponent) + FT(centre[1]),
+                 times_power_of_two(q.z(), exponent) + FT(centre[2]));
   }
 };
 
