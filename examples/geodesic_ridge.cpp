@@ -32,6 +32,9 @@
 // and the repair changed (Geodesic_ridge::File_index_map).
 //
 // Besides the package it needs Boost.Program_options, nlohmann-json and libpng.
+#include "cli/input_lines.h"
+#include "cli/options.h"
+
 #include <Geodesic_ridge/IO/png.h>
 #include <Geodesic_ridge/IO/polylines.h>
 #include <Geodesic_ridge/IO/read_triangle_mesh.h>
@@ -78,460 +81,14 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3                                          Point_3;
-typedef CGAL::Surface_mesh<Point_3>                         Mesh;
-typedef Mesh::Vertex_index                                  vertex_descriptor;
-typedef Mesh::Face_index                                    face_descriptor;
-typedef std::pair<face_descriptor, std::array<double, 3> >  Location;
+// the options (cli/options.h) and the query and source lines (cli/input_lines.h)
+using namespace geodesic_ridge_cli;
+
 typedef Geodesic_ridge::Ridge_curve<Mesh, Point_3>          Ridge;
 typedef std::vector<std::vector<Geodesic_ridge::Ridge_point<Point_3> > > Ridge_polylines;
 typedef Mesh::Property_map<vertex_descriptor, double>       Distance_map;
-typedef Geodesic_ridge::File_index_map<Mesh>                File_map;
 typedef Geodesic_ridge::Connected_component_map<Mesh>       Component_map;
 typedef nlohmann::ordered_json                              Json; // keys stay in the order written
-namespace po = boost::program_options;
-namespace PMP = CGAL::Polygon_mesh_processing;
-
-struct Usage_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
-
-const char* synopsis =
-    "usage: geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z) [--repair]\n"
-    "                      [--tolerance T] [--solver exact|vtp|fmm|heat|heat-idt|dijkstra] [--ridge OUT.polylines.txt]\n"
-    "                      [--ridge-locations OUT.txt] [--rough-cut OUT.polylines.txt]\n"
-    "                      [--refined OUT.ply [--ply-ascii]]\n"
-    "                      [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]\n"
-    "                      [--query IN.txt [--query-barycentric] --query-out OUT.txt]\n"
-    "                      [--field linear|cone] [--linear-ridge] [--no-corner-fallback] [--stats OUT.json]\n"
-    "                      [--png OUT.png]\n"
-    "       geodesic_ridge MESH --sources FILE --out-dir DIR [--repair] [--tolerance T] [--solver NAME]\n"
-    "                      [--linear-ridge] [--no-corner-fallback]\n"
-    "  MESH: a manifold surface, closed or with borders (.off, .obj, .ply; PLY triangle strips too).\n"
-    "  Polygons are triangulated (CGAL's triangulate_face rule; a note on stderr says how many, and how\n"
-    "  many were not planar); dirty meshes are refused, naming what --repair would fix.\n"
-    "  Indices are the file's, in and out: V, FACE, the FACE of query lines and of --ridge-locations, the\n"
-    "  stats' source, the refined mesh's 'source_face'. A point on a polygon is located among its triangles;\n"
-    "  barycentric coordinates (--query-barycentric, --ridge-locations) have one value per vertex of the\n"
-    "  file face, in file order: for a polygon, those of the point in the triangle of it that holds the\n"
-    "  point, 0 for its other vertices.\n"
-    "  A mesh in several parts: the ridge is that of the source's connected component; the others are\n"
-    "  unreachable (a note on stderr): 'inf' in --query-out, distance -1 in --refined, grey in --png.\n"
-    "  Every output file is written beside its target, then renamed onto it: it is whole or not there.\n\n";
-
-std::size_t parse_index(const std::string& what, const std::string& s)
-{
-  if(s.empty() || s.find_first_not_of("0123456789") != std::string::npos)
-    throw Geodesic_ridge::Invalid_source_error(what + " '" + s + "' is not a non-negative integer");
-  errno = 0;
-  const unsigned long long v = std::strtoull(s.c_str(), nullptr, 10);
-  if(errno == ERANGE || v > std::numeric_limits<std::size_t>::max())
-    throw Geodesic_ridge::Invalid_source_error(what + " '" + s + "' is out of range");
-  return static_cast<std::size_t>(v);
-}
-
-double parse_number(const std::string& what, const std::string& s)
-{
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(s.c_str(), &end);
-  if(s.empty() || end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(v))
-    throw Geodesic_ridge::Invalid_parameter_error(what + " '" + s + "' is not a finite number");
-  return v;
-}
-
-std::vector<double> parse_values(const std::string& s)
-{
-  std::vector<double> values;
-  std::size_t start = 0;
-  for(;;)
-  {
-    const std::size_t comma = s.find(',', start);
-    values.push_back(parse_number("iso-line value", s.substr(start, comma == std::string::npos ? comma : comma - start)));
-    if(comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return values;
-}
-
-struct Options
-{
-  bool help = false;
-  bool repair = false;
-  std::string mesh;
-  std::optional<std::size_t> source_vertex;
-  std::optional<std::size_t> source_face;
-  std::array<std::string, 3> source_point_text;
-  double tolerance = Geodesic_ridge::default_tolerance;
-  std::string rough_cut, stats, ridge, png, ridge_locations, refined;
-  bool ply_ascii = false;
-  std::string solver = "exact";
-  std::string isolines;                   // output file
-  std::optional<std::size_t> isoline_count;
-  std::vector<double> isoline_values;
-  bool isolines_from_vertices = false;
-  std::string query, query_out;
-  bool query_barycentric = false;
-  Geodesic_ridge::Field field = Geodesic_ridge::Field::linear;
-  bool corner_fallback = true;
-  bool linear_ridge = false;
-  std::string sources, out_dir;           // many sources: --sources FILE --out-dir DIR
-};
-
-// whether the corner fallback applies: the exact solver's kink split, linear field
-// the solvers that offer cones: the cone field, the cone ridge, the kink split
-bool solver_has_cones(const std::string& solver) { return solver == "exact" || solver == "vtp"; }
-
-bool corner_fallback_used(const Options& o)
-{
-  return o.corner_fallback && solver_has_cones(o.solver) && o.field == Geodesic_ridge::Field::linear;
-}
-
-// Boost's multitoken() takes any number of values; --source-point takes 4, the
-// iso-line options 2, so that the mesh may follow them.
-class Tokens : public po::typed_value<std::vector<std::string> >
-{
-public:
-  Tokens(unsigned n, const char* name) : po::typed_value<std::vector<std::string> >(nullptr), n_(n)
-  { value_name(name); }
-  unsigned min_tokens() const override { return n_; }
-  unsigned max_tokens() const override { return n_; }
-
-private:
-  unsigned n_;
-};
-
-// The options and their help. Values stay text here: parse() reads them with
-// messages that name the value.
-po::options_description describe()
-{
-  po::options_description d("options", 100, 50);
-  auto text = [](const char* name) { return po::value<std::string>()->value_name(name); };
-  d.add_options()
-    ("help,h", "print this help")
-    ("source-vertex", text("V"), "source at vertex V (0-based, file order)")
-    ("source-point", new Tokens(4, "FACE X Y Z"), "source at the point (X,Y,Z) of face FACE (0-based, file order)")
-    ("repair", po::bool_switch(), "repair the mesh with CGAL's Polygon_mesh_processing: merge vertices at one "
-                                  "position, remove faces with fewer than 3 distinct vertices, duplicate and "
-                                  "degenerate faces and isolated vertices, split non-manifold edges and vertices, "
-                                  "orient consistently; one line per kind of repair on stderr. A source vertex that "
-                                  "is split becomes the copy with the largest incident area")
-    ("tolerance", text("T"), "significance tolerance in [0, 0.5) (default 0.025)")
-    ("solver", text("NAME"), "geodesic solver on the extended surface: exact (CGAL Surface_mesh_shortest_path, "
-                             "default; the reference), vtp (exact too: our window propagation, with the same cone "
-                             "ridge and an exact cone field; some 10 times faster and leaner from 10k faces on: "
-                             "the choice for large meshes), fmm (fast marching, first order), heat or heat-idt "
-                             "(CGAL's heat method on the mesh or on its intrinsic Delaunay triangulation; vertex "
-                             "sources only) or dijkstra (paths along edges; a baseline)")
-    ("ridge", text("OUT"), "write the ridge curve as CGAL polylines (n x1 y1 z1 ... per line)")
-    ("ridge-locations", text("OUT"), "write every ridge point as 'FACE B0 B1 B2 ANGLE' (barycentric in the file "
-                                     "order of the face's vertices, one value per vertex; ANGLE: degrees between the "
-                                     "fronts)")
-    ("refined", text("OUT.ply"), "the ridge-refined mesh: faces the ridge crosses split along it, a 'distance' per "
-                                 "vertex (-1: unreachable, in another connected component), a 'source_face' per face (binary PLY; "
-                                 "--ply-ascii for ASCII)")
-    ("ply-ascii", po::bool_switch(), "write the refined mesh as ASCII PLY")
-    ("isolines", new Tokens(2, "N OUT"), "N iso-lines equally spaced strictly between 0 and the largest distance, "
-                                         "as CGAL polylines, from the region-wise field")
-    ("isoline-values", new Tokens(2, "a,b,c OUT"), "iso-lines at the given distances")
-    ("isolines-from-vertices", po::bool_switch(),
-     "iso-lines from linear interpolation of the vertex distances instead")
-    ("query", text("IN.txt"), "distance queries, one per line: 'FACE X Y Z' (a point of the face, within 1e-7 of "
-                              "its size), or with --query-barycentric 'FACE B0 B1 B2' (summing to 1 within 1e-9; "
-                              "one value per vertex of the file face); '#' starts a comment")
-    ("query-barycentric", po::bool_switch(), "the queries are barycentric coordinates")
-    ("query-out", text("OUT"), "the distances, one per line in the order of IN, 17 digits; 'inf' for a point in "
-                               "another connected component than the source's")
-    ("field", text("KIND"), "the field the queries evaluate: linear (default, the paper's region-wise linear "
-                            "field) or cone (solvers exact and vtp: per face copy, the solver's cones; with vtp "
-                            "the exact lower envelope of its windows; the refined mesh, the iso-lines and the "
-                            "picture's colours stay linear)")
-    ("linear-ridge", po::bool_switch(),
-     "solvers exact and vtp: report the ridge of the region-wise linear field (the refined mesh's) instead of the "
-     "cone ridge, where the solver's cones meet (parameters::cone_ridge(false))")
-    ("no-corner-fallback", po::bool_switch(),
-     "solvers exact and vtp: a face copy whose corner no cone sample reaches exactly stays whole instead of taking that "
-     "corner's front from a sample next to it (parameters::corner_fallback(false): fewer branches found at small "
-     "tolerances)")
-    ("sources", text("FILE"), "many sources instead of one, one per line: 'V' (a vertex) or 'FACE X Y Z' (a point of "
-                              "the face); '#' starts a comment; a line that does not parse refuses the file. With "
-                              "--out-dir; in parallel when built with TBB")
-    ("out-dir", text("DIR"), "with --sources: for the k-th source (0-based) DIR/ridge_k.polylines.txt and "
-                             "DIR/ridge_k.json (its source, counts and timings), or, if it fails (out of range, off its "
-                             "face, an error while computing it), DIR/ridge_k.error.txt (its message; the others go on, "
-                             "the exit status is 1); DIR/summary.json: every source's status, time and files; a "
-                             "progress line on stderr when it is a terminal")
-    ("rough-cut", text("OUT"), "write the rough cut locus K (stage 1) as CGAL polylines")
-    ("stats", text("OUT.json"), "write counts, timings and parameters as JSON")
-    ("png", text("OUT.png"), "picture: the mesh from two opposite sides coloured by the distance (viridis, dark "
-                             "bands at 20 levels), the ridge in red, the rough cut locus in white, the source in "
-                             "green");
-  return d;
-}
-
-// Boost's errors, said as this program always said them.
-po::variables_map read_command_line(int argc, char** argv, const po::options_description& visible)
-{
-  po::options_description all;
-  all.add(visible).add_options()("mesh", po::value<std::vector<std::string> >());
-  po::positional_options_description positional;
-  positional.add("mesh", -1);
-  po::variables_map vm;
-  try
-  {
-    // no guessing: --tol is not --tolerance
-    const int style = po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
-    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).style(style).run(), vm);
-  }
-  catch(const po::unknown_option& e)
-  {
-    throw Usage_error("unknown option '" + e.get_option_name() + "'");
-  }
-  catch(const po::invalid_command_line_syntax& e)
-  {
-    if(e.kind() != po::invalid_command_line_syntax::missing_parameter) throw Usage_error(e.what());
-    const auto* d = visible.find_nothrow(e.get_option_name().substr(2), false);
-    throw Usage_error("option " + e.get_option_name() + " needs " +
-                      (d && d->semantic()->max_tokens() > 1 ? d->semantic()->name() : "a value"));
-  }
-  catch(const po::multiple_occurrences& e)
-  {
-    if(e.get_option_name() == "--source-vertex") throw Usage_error("give one source only");
-    throw Usage_error("option " + e.get_option_name() + " is given more than once");
-  }
-  catch(const po::error& e)
-  {
-    throw Usage_error(e.what());
-  }
-  return vm;
-}
-
-std::string text(const po::variables_map& vm, const char* name)
-{
-  return vm.count(name) ? vm[name].as<std::string>() : std::string();
-}
-
-std::vector<std::string> tokens(const po::variables_map& vm, const char* name)
-{
-  return vm.count(name) ? vm[name].as<std::vector<std::string> >() : std::vector<std::string>();
-}
-
-// The options whose values are numbers or names, read with messages that name them.
-void read_values(const po::variables_map& vm, Options& o)
-{
-  const auto point = tokens(vm, "source-point");
-  if((vm.count("source-vertex") && !point.empty()) || point.size() > 4) throw Usage_error("give one source only");
-  if(vm.count("source-vertex")) o.source_vertex = parse_index("source vertex", text(vm, "source-vertex"));
-  if(!point.empty())
-  {
-    o.source_face = parse_index("source face", point[0]);
-    std::copy(point.begin() + 1, point.end(), o.source_point_text.begin());
-  }
-  const auto isolines = tokens(vm, "isolines"), values = tokens(vm, "isoline-values");
-  if(isolines.size() + values.size() > 2) throw Usage_error("give --isolines or --isoline-values once");
-  if(!isolines.empty())
-  {
-    o.isoline_count = parse_index("iso-line count", isolines[0]);
-    if(*o.isoline_count == 0) throw Geodesic_ridge::Invalid_parameter_error("iso-line count must be positive");
-    o.isolines = isolines[1];
-  }
-  if(!values.empty()) { o.isoline_values = parse_values(values[0]); o.isolines = values[1]; }
-  const std::string field = vm.count("field") ? text(vm, "field") : "linear";
-  if(field != "linear" && field != "cone")
-    throw Geodesic_ridge::Invalid_parameter_error("unknown field '" + field + "': linear or cone");
-  o.field = field == "cone" ? Geodesic_ridge::Field::cone : Geodesic_ridge::Field::linear;
-  if(vm.count("solver")) o.solver = text(vm, "solver");
-  if(o.solver != "exact" && o.solver != "vtp" && o.solver != "fmm" && o.solver != "heat" &&
-     o.solver != "heat-idt" && o.solver != "dijkstra")
-    throw Geodesic_ridge::Invalid_parameter_error("unknown solver '" + o.solver +
-                                                  "': exact, vtp, fmm, heat, heat-idt or dijkstra");
-}
-
-// The options, checked. The tolerance's range is the library's to check: it
-// does so when the ridge is computed, before any work.
-Options parse(int argc, char** argv)
-{
-  const po::options_description visible = describe();
-  const po::variables_map vm = read_command_line(argc, argv, visible);
-  Options o;
-  if(vm.count("help"))
-  {
-    std::cout << synopsis << visible;
-    o.help = true;
-    return o;
-  }
-  read_values(vm, o);
-  const auto mesh = tokens(vm, "mesh");
-  if(mesh.empty()) throw Usage_error("missing the MESH argument");
-  if(mesh.size() > 1) throw Usage_error("unexpected argument '" + mesh[1] + "' (the mesh is '" + mesh[0] + "')");
-  o.mesh = mesh[0];
-  o.rough_cut = text(vm, "rough-cut"), o.stats = text(vm, "stats"), o.ridge = text(vm, "ridge");
-  o.png = text(vm, "png"), o.ridge_locations = text(vm, "ridge-locations"), o.refined = text(vm, "refined");
-  o.query = text(vm, "query"), o.query_out = text(vm, "query-out");
-  o.ply_ascii = vm["ply-ascii"].as<bool>();
-  o.repair = vm["repair"].as<bool>();
-  o.isolines_from_vertices = vm["isolines-from-vertices"].as<bool>();
-  o.query_barycentric = vm["query-barycentric"].as<bool>();
-  o.corner_fallback = !vm["no-corner-fallback"].as<bool>();
-  o.linear_ridge = vm["linear-ridge"].as<bool>();
-  o.sources = text(vm, "sources"), o.out_dir = text(vm, "out-dir");
-  if(o.sources.empty() != o.out_dir.empty()) throw Usage_error("--sources and --out-dir go together");
-  if(!o.sources.empty())
-  {
-    if(o.source_vertex || o.source_face) throw Usage_error("give --sources or one source, not both");
-    if(!o.rough_cut.empty() || !o.stats.empty() || !o.ridge.empty() || !o.png.empty() || !o.ridge_locations.empty() ||
-       !o.refined.empty() || !o.query.empty() || !o.isolines.empty())
-      throw Usage_error("with --sources the outputs go to --out-dir; the other outputs are for one source");
-  }
-  else if(!o.source_vertex && !o.source_face)
-    throw Usage_error("missing the source: --source-vertex V or --source-point FACE X Y Z (or --sources FILE)");
-  if(o.query.empty() != o.query_out.empty()) throw Usage_error("--query and --query-out go together");
-  if(o.query_barycentric && o.query.empty()) throw Usage_error("--query-barycentric needs --query");
-  if(o.isolines_from_vertices && o.isolines.empty())
-    throw Usage_error("--isolines-from-vertices needs --isolines or --isoline-values");
-  if(o.ply_ascii && o.refined.empty()) throw Usage_error("--ply-ascii needs --refined");
-  if(o.field == Geodesic_ridge::Field::cone && !solver_has_cones(o.solver))
-    throw Geodesic_ridge::Invalid_parameter_error("the cone field needs a solver with cones: exact or vtp");
-  if(!o.corner_fallback && !solver_has_cones(o.solver))
-    throw Geodesic_ridge::Invalid_parameter_error("--no-corner-fallback is for the solvers with cones (exact, vtp)");
-  if(!o.corner_fallback && o.field == Geodesic_ridge::Field::cone)
-    throw Geodesic_ridge::Invalid_parameter_error("--no-corner-fallback is for the linear field (the cone field's "
-                                                  "samples are next to the corners already)");
-  if(o.linear_ridge && !solver_has_cones(o.solver))
-    throw Geodesic_ridge::Invalid_parameter_error("--linear-ridge is for the solvers with cones, exact and vtp (the "
-                                                  "others have no cone ridge)");
-  if(o.linear_ridge && o.field == Geodesic_ridge::Field::cone)
-    throw Geodesic_ridge::Invalid_parameter_error("--linear-ridge is not for the cone field (it reports the cone "
-                                                  "ridge)");
-  if(vm.count("tolerance")) o.tolerance = parse_number("tolerance", text(vm, "tolerance"));
-  return o;
-}
-
-// The point q of file face `face` as a Face_location (CGAL's order): for a
-// polygon, in the triangle of it that holds q. A point farther than 1e-7 of
-// the face's size from the face is an error; round-off below that is clamped,
-// so that the coordinates are >= 0 and sum to 1.
-Location locate(const File_map& map, const Mesh& m, std::size_t face, const Point_3& q,
-                const std::string& what = "source point")
-{
-  const std::optional<Location> found = map.locate(face, q, m);
-  if(!found)
-    throw Geodesic_ridge::Invalid_source_error("face " + std::to_string(face) + " was removed by the repair");
-  Location loc = *found; // the coordinates of q's projection on the face's plane
-  const face_descriptor f = loc.first;
-  const double off_plane = std::sqrt(CGAL::squared_distance(q, PMP::construct_point(loc, m)));
-  double size2 = 0;
-  for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m))
-    size2 = std::max(size2, CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
-  const double eps = 1e-7;
-  std::array<double, 3>& w = loc.second;
-  if(w[0] < -eps || w[1] < -eps || w[2] < -eps || off_plane > eps * std::sqrt(size2))
-  {
-    std::ostringstream s;
-    s.precision(17);
-    s << what << " (" << q << ") is not on face " << face;
-    throw Geodesic_ridge::Invalid_source_error(s.str());
-  }
-  for(double& x : w) x = std::max(x, 0.);
-  const double sum = w[0] + w[1] + w[2];
-  for(double& x : w) x /= sum;
-  return loc;
-}
-
-// The file face `text` names, checked.
-std::size_t file_face(const std::string& text, const File_map& map)
-{
-  const std::size_t face = parse_index("face", text);
-  if(face >= map.number_of_file_faces())
-    throw Geodesic_ridge::Invalid_parameter_error("face " + text + " is out of range: the mesh has " +
-                                                  std::to_string(map.number_of_file_faces()) + " faces");
-  return face;
-}
-
-// The barycentric query "FACE B0 ... Bn-1": one coordinate per vertex of the
-// file face, in file order.
-Location barycentric_query(const std::vector<std::string>& t, const Mesh& mesh, const File_map& map)
-{
-  const std::size_t face = file_face(t[0], map);
-  const std::size_t n = map.file_face_vertices(face).size();
-  if(t.size() != n + 1)
-    throw Geodesic_ridge::Invalid_parameter_error(
-        n == 3 ? "expected 'FACE B0 B1 B2', got " + std::to_string(t.size()) + " fields"
-               : "expected 'FACE' and " + std::to_string(n) + " coordinates (face " + t[0] + " has " +
-                     std::to_string(n) + " vertices), got " + std::to_string(t.size()) + " fields");
-  std::vector<double> v(n);
-  double sum = 0;
-  bool negative = false;
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    v[k] = parse_number("coordinate", t[k + 1]);
-    sum += v[k];
-    negative = negative || v[k] < -1e-9;
-  }
-  if(std::abs(sum - 1) > 1e-9 || negative)
-    throw Geodesic_ridge::Invalid_parameter_error("barycentric coordinates must be >= 0 and sum to 1 within 1e-9");
-  for(double& x : v) x = std::max(x, 0.);
-  const std::optional<Location> loc = map.location(face, v, mesh);
-  if(!loc)
-    throw Geodesic_ridge::Invalid_parameter_error("face " + t[0] + " was removed by the repair");
-  Location l = *loc;
-  for(double& x : l.second) x = std::max(x, 0.);
-  return l;
-}
-
-// One query of a query file: "FACE X Y Z" or, barycentric, "FACE B0 B1 B2".
-Location read_query(const std::vector<std::string>& t, const Mesh& mesh, const File_map& map, bool barycentric)
-{
-  if(barycentric) return barycentric_query(t, mesh, map);
-  if(t.size() != 4)
-    throw Geodesic_ridge::Invalid_parameter_error("expected 'FACE X Y Z', got " + std::to_string(t.size()) +
-                                                  " fields");
-  const std::size_t face = file_face(t[0], map);
-  std::array<double, 3> v;
-  for(int k = 0; k < 3; ++k) v[k] = parse_number("coordinate", t[k + 1]);
-  return locate(map, mesh, face, Point_3(v[0], v[1], v[2]), "point");
-}
-
-// One item per line of `filename` (`kind`: "query", "source"), made by
-// `read(tokens, line number)`; '#' starts a comment. Errors name the file and the line.
-template <class Read>
-auto read_lines(const std::string& filename, const std::string& kind, const Read& read)
-{
-  std::ifstream is(filename);
-  if(!is) throw Geodesic_ridge::Invalid_parameter_error("cannot open " + kind + " file '" + filename + "'");
-  std::vector<decltype(read(std::vector<std::string>(), std::size_t()))> items;
-  std::string line;
-  for(std::size_t number = 1; std::getline(is, line); ++number)
-  {
-    const std::size_t hash = line.find('#');
-    if(hash != std::string::npos) line.erase(hash);
-    std::istringstream tokens(line);
-    std::vector<std::string> t;
-    for(std::string x; tokens >> x;) t.push_back(x);
-    if(t.empty()) continue;
-    try
-    {
-      items.push_back(read(t, number));
-    }
-    catch(const Geodesic_ridge::Error& e)
-    {
-      throw Geodesic_ridge::Invalid_parameter_error(kind + " file '" + filename + "' line " + std::to_string(number) +
-                                                    ": " + e.what());
-    }
-  }
-  if(is.bad()) throw Geodesic_ridge::Invalid_parameter_error("cannot read " + kind + " file '" + filename + "'");
-  return items;
-}
-
-std::vector<Location> read_queries(const std::string& filename, const Mesh& mesh, const File_map& map,
-                                   bool barycentric)
-{
-  return read_lines(filename, "query", [&](const std::vector<std::string>& t, std::size_t) {
-    return read_query(t, mesh, map, barycentric);
-  });
-}
 
 // Writes the file `target` whole or not at all: `write(path)` writes a
 // temporary file beside it (in its directory, so that the rename is atomic),
@@ -675,28 +232,6 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
   write_json(filename, j);
 }
 
-// The mesh vertex of the file's source vertex, said on stderr when the repair
-// merged or split it.
-vertex_descriptor source_vertex(const Mesh& mesh, const File_map& map, std::size_t v)
-{
-  if(v >= map.number_of_file_vertices())
-    throw Geodesic_ridge::Invalid_source_error("source vertex " + std::to_string(v) +
-                                               " is out of range: the mesh has " +
-                                               std::to_string(map.number_of_file_vertices()) + " vertices");
-  const std::optional<vertex_descriptor> found = map.vertex(v, mesh);
-  if(!found)
-    throw Geodesic_ridge::Invalid_source_error("source vertex " + std::to_string(v) +
-                                               " was removed by the repair (no face of the repaired mesh uses it)");
-  const std::size_t copies = map.vertices(v).size(), merged_into = map.file_vertex(*found, mesh);
-  if(merged_into != v)
-    std::cerr << "geodesic_ridge: note: source vertex " << v << " was merged by the repair into vertex "
-              << merged_into << " (same position)\n";
-  if(copies > 1)
-    std::cerr << "geodesic_ridge: note: source vertex " << v << " was split by the repair into " << copies
-              << " copies; the source is the copy with the largest incident area\n";
-  return *found;
-}
-
 // The source the options name, on the mesh as read: a vertex or a point.
 struct Source
 {
@@ -713,20 +248,6 @@ struct Source
   }
 };
 
-// The point q of file face `face`, checked: the face is the file's and the
-// repair kept it, q is on it.
-Location source_point(const Mesh& mesh, const File_map& map, std::size_t face, const Point_3& q)
-{
-  if(face >= map.number_of_file_faces())
-    throw Geodesic_ridge::Invalid_source_error("source face " + std::to_string(face) +
-                                               " is out of range: the mesh has " +
-                                               std::to_string(map.number_of_file_faces()) + " faces");
-  if(map.faces(face).empty())
-    throw Geodesic_ridge::Invalid_source_error("source face " + std::to_string(face) +
-                                               " was removed by the repair (degenerate, duplicate, or with "
-                                               "fewer than 3 distinct vertices)");
-  return locate(map, mesh, face, q);
-}
 
 Source named_source(const Mesh& mesh, const File_map& map, const Options& o)
 {
@@ -775,17 +296,18 @@ template <class F>
 auto with_parameters(const Options& o, const F& f)
 {
   namespace p = Geodesic_ridge::parameters;
-  auto with = [&](const auto& solver) { return f(p::tolerance(o.tolerance, p::solver(solver))); };
+  auto with = [&](const auto& solver) { return f(p::solver(solver).tolerance(o.tolerance)); };
   if(o.solver == "fmm") return with(Geodesic_ridge::Fast_marching_solver());
   if(o.solver == "vtp")
-    return f(p::tolerance(o.tolerance, p::solver(Geodesic_ridge::Window_propagation_solver(),
-                                                 p::field(o.field, p::corner_fallback(o.corner_fallback,
-                                                                                      p::cone_ridge(!o.linear_ridge))))));
+    return f(p::solver(Geodesic_ridge::Window_propagation_solver())
+                 .tolerance(o.tolerance)
+                 .field(o.field)
+                 .corner_fallback(o.corner_fallback)
+                 .cone_ridge(!o.linear_ridge));
   if(o.solver == "heat") return with(Geodesic_ridge::Heat_method_solver<>());
   if(o.solver == "heat-idt") return with(Geodesic_ridge::Heat_method_idt_solver());
   if(o.solver == "dijkstra") return with(Geodesic_ridge::Dijkstra_solver());
-  return f(p::tolerance(o.tolerance, p::field(o.field, p::corner_fallback(o.corner_fallback,
-                                                                          p::cone_ridge(!o.linear_ridge)))));
+  return f(p::tolerance(o.tolerance).field(o.field).corner_fallback(o.corner_fallback).cone_ridge(!o.linear_ridge));
 }
 
 // The ridge of the source.
@@ -1084,41 +606,6 @@ int run(const Options& o)
     std::cout << "wrote " << o.stats << "\n";
   }
   return 0;
-}
-
-// --sources: a line 'V' (a file vertex) or 'FACE X Y Z' (a point of a file
-// face). Its syntax is checked when the file is read (a bad line refuses the
-// file); whether the mesh has that vertex, or the point on that face, is the
-// source's own success or failure (resolve()).
-struct Source_line
-{
-  std::string text;             // the line, for the outputs
-  std::size_t line = 0;         // its number in the file
-  std::size_t index = 0;        // V, or FACE
-  std::optional<Point_3> point; // X Y Z
-};
-
-Source_line read_source_line(const std::vector<std::string>& t, std::size_t line)
-{
-  if(t.size() != 1 && t.size() != 4)
-    throw Geodesic_ridge::Invalid_parameter_error("expected 'V' or 'FACE X Y Z', got " + std::to_string(t.size()) +
-                                                  " fields");
-  Source_line s;
-  s.text = t[0];
-  for(std::size_t k = 1; k < t.size(); ++k) s.text += " " + t[k];
-  s.line = line;
-  s.index = parse_index(t.size() == 1 ? "source vertex" : "source face", t[0]);
-  if(t.size() == 4)
-    s.point = Point_3(parse_number("coordinate", t[1]), parse_number("coordinate", t[2]),
-                      parse_number("coordinate", t[3]));
-  return s;
-}
-
-// The source on the mesh as read (a vertex as a corner of a face of it).
-Location resolve(const Source_line& s, const Mesh& mesh, const File_map& map)
-{
-  if(s.point) return source_point(mesh, map, s.index, *s.point);
-  return PMP::locate_vertex<double>(source_vertex(mesh, map, s.index), mesh);
 }
 
 Json batch_parameters(const Options& o)

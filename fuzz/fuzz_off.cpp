@@ -3,7 +3,7 @@
 //
 // libFuzzer entry point of the off reader target (bash scripts/fuzz.sh off SECONDS).
 
-#define GR_FUZZ_READERS_ONLY
+#define GR_FUZZ_READERS
 #include "fuzz_targets.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* d, size_t n) { return gr_fuzz::fuzz_off(d, n); }

@@ -3,7 +3,7 @@
 //
 // libFuzzer entry point of the pipeline target (bash scripts/fuzz.sh pipeline SECONDS).
 
-#define GR_FUZZ_PIPELINE_ONLY
+#define GR_FUZZ_PIPELINE
 #include "fuzz_targets.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* d, size_t n) { return gr_fuzz::fuzz_pipeline(d, n); }

@@ -3,7 +3,7 @@
 //
 // libFuzzer entry point of the ply reader target (bash scripts/fuzz.sh ply SECONDS).
 
-#define GR_FUZZ_READERS_ONLY
+#define GR_FUZZ_READERS
 #include "fuzz_targets.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* d, size_t n) { return gr_fuzz::fuzz_ply(d, n); }

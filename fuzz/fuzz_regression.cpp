@@ -27,7 +27,10 @@ struct Target
 const Target targets[] = {{"off", gr_fuzz::fuzz_off},
                           {"obj", gr_fuzz::fuzz_obj},
                           {"ply", gr_fuzz::fuzz_ply},
-                          {"pipeline", gr_fuzz::fuzz_pipeline}};
+                          {"pipeline", gr_fuzz::fuzz_pipeline},
+                          {"options", gr_fuzz::fuzz_options},
+                          {"query", gr_fuzz::fuzz_query},
+                          {"sources", gr_fuzz::fuzz_sources}};
 
 } // namespace
 

@@ -47,12 +47,12 @@ rm -f /tmp/geodesic_ridge_fuzz_probe.$$
 
 mkdir -p build-fuzz
 bin=build-fuzz/fuzz_$target
-if [ ! -x "$bin" ] || [ -n "$(find fuzz include -newer "$bin" -name '*.h' -o -newer "$bin" -name "fuzz_$target.cpp" | head -1)" ]; then
+if [ ! -x "$bin" ] || [ -n "$(find fuzz include examples/cli -newer "$bin" -name '*.h' -o -newer "$bin" -name "fuzz_$target.cpp" | head -1)" ]; then
   echo "building $bin (a CGAL translation unit: a minute or two)"
   # -frounding-math and the GMP defines as the CMake build (CGAL's interval arithmetic needs them)
   "$cxx" -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-omit-frame-pointer -frounding-math \
     -DCGAL_USE_GMPXX=1 -I include -isystem /usr/include/eigen3 \
-    "fuzz/fuzz_$target.cpp" -o "$bin" -lgmpxx -lmpfr -lgmp
+    "fuzz/fuzz_$target.cpp" -o "$bin" -lboost_program_options -lgmpxx -lmpfr -lgmp
 fi
 
 corpus=build-fuzz/corpus-$target

@@ -41,6 +41,8 @@ cli_failure(source_not_a_number   "source vertex 'abc' is not a non-negative int
 cli_failure(source_negative       "source vertex '-1' is not a non-negative integer" ${CLI} ${D}/torus_1k.off --source-vertex -1)
 cli_failure(source_face_range     "source face 1000 is out of range" ${CLI} ${D}/torus_1k.off --source-point 1000 0 0 0)
 cli_failure(source_point_off_face "is not on face 0" ${CLI} ${D}/torus_1k.off --source-point 0 100 100 100)
+# far from the face (the coordinates huge, NaN, or summing to 0): off the face, not "removed"
+cli_failure(source_point_far      "is not on face 0" ${CLI} ${D}/torus_1k.off --source-point 0 0.5 0.5 1e300)
 cli_failure(source_point_nan      "source x 'nan' is not a finite number" ${CLI} ${D}/torus_1k.off --source-point 0 nan 0 0)
 cli_failure(tolerance_too_large   "tolerance 0.5.* out of range" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance 0.5)
 cli_failure(tolerance_negative    "out of range" ${CLI} ${D}/torus_1k.off --source-vertex 0 --tolerance -0.01)

@@ -329,9 +329,11 @@ private:
     std::optional<Face_location> best;
     const auto vpm = get(CGAL::vertex_point, tm);
     // located among the candidates moved to a unit size (at 1e-160 a squared
-    // length is 0): the same coordinates at any scale
+    // length is 0): the same coordinates at any scale. The size is theirs, not
+    // p's: a point far away made them a point, "degenerate", and the face
+    // "removed by the repair"; now it gets huge (or NaN) coordinates, which
+    // the caller refuses.
     internal::Normalization_of_points around;
-    around.add(p);
     for(face_descriptor f : candidates)
       for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm)) around.add(get(vpm, v));
     const internal::Normalization unit = around.normalization();
