@@ -5,8 +5,8 @@
 // exact solver).
 //
 // Per face copy the exact solver gives S cones (one per sample point:
-// `Exact_solver::cone_samples()` for the cone field,
-// `Exact_solver::cone_ridge_fallback_samples()` for the default cone ridge,
+// `Cone_samples::cone_samples()` for the cone field,
+// `Cone_samples::cone_ridge_fallback_samples()` for the default cone ridge,
 // read on the faces near kinks only; a copy split at a kink gives one copy
 // per front, whose every sample has the front's cone): a point of the face
 // takes, per copy, the cone of the nearest sample point, the distance in the
@@ -37,7 +37,7 @@
 #include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/lower_envelope.h>
 #include <Geodesic_ridge/ridge_curve.h>
-#include <Geodesic_ridge/solvers/Exact_solver.h>
+#include <Geodesic_ridge/solvers/Face_cone.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -37,28 +37,6 @@
 
 namespace Geodesic_ridge {
 
-namespace internal_np {
-struct vertex_distance_map_t {};
-} // namespace internal_np
-
-namespace parameters {
-/// \ingroup PkgGeodesicRidgeNamedParameters
-/// Named parameter of `refine_mesh_along_ridge()`: a writable vertex property
-/// map of the output mesh that receives the distance at each vertex.
-template <class PropertyMap>
-CGAL::Named_function_parameters<PropertyMap, internal_np::vertex_distance_map_t> vertex_distance_map(PropertyMap m)
-{
-  return CGAL::Named_function_parameters<PropertyMap, internal_np::vertex_distance_map_t>(m);
-}
-/// \ingroup PkgGeodesicRidgeNamedParameters
-/// Same, added to the named parameters `np`.
-template <class PropertyMap, class NamedParameters>
-CGAL::Named_function_parameters<PropertyMap, internal_np::vertex_distance_map_t, NamedParameters>
-vertex_distance_map(PropertyMap m, const NamedParameters& np)
-{
-  return CGAL::Named_function_parameters<PropertyMap, internal_np::vertex_distance_map_t, NamedParameters>(m, np);
-}
-} // namespace parameters
 
 /// \ingroup PkgGeodesicRidgeRef
 /// A visitor of `refine_mesh_along_ridge()` that does nothing. A visitor has

@@ -21,7 +21,7 @@
 #include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/lower_envelope.h>
 #include <Geodesic_ridge/internal/faces_by_index.h>
-#include <Geodesic_ridge/solvers/Exact_solver.h>
+#include <Geodesic_ridge/solvers/Face_cone.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Gmpq.h>
@@ -355,7 +355,7 @@ private:
 // `samples`; copies without cones (a source or apex at a sample) stay whole.
 // With `corner_fallback` (`parameters::corner_fallback`), the last three
 // samples are the fallbacks of corners 0, 1 and 2
-// (`Exact_solver::corner_fallback_samples()`), the others those of step 1.
+// (`Cone_samples::corner_fallback_samples()`), the others those of step 1.
 template <class TriangleMesh, class VertexPointMap, class FaceIndexMap, class Point>
 class Kink_splitter
 {

@@ -7,7 +7,7 @@
 #ifndef GEODESIC_RIDGE_INTERNAL_FACE_CONE_FIELD_H
 #define GEODESIC_RIDGE_INTERNAL_FACE_CONE_FIELD_H
 
-#include <Geodesic_ridge/solvers/Exact_solver.h>
+#include <Geodesic_ridge/solvers/Face_cone.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -102,8 +102,8 @@ inline std::pair<Face_plane::Point_2, double> cone_path(const Face_plane& plane,
 
 /// The cone field of one face. Sampled cones (`Exact_solver`): `count`
 /// cones, S per copy (copy-major), S the number of `samples`
-/// (`Exact_solver::cone_samples()`, or
-/// `Exact_solver::cone_ridge_fallback_samples()` for the cone ridge alone); a
+/// (`Cone_samples::cone_samples()`, or
+/// `Cone_samples::cone_ridge_fallback_samples()` for the cone ridge alone); a
 /// copy's value at a point is its cone of the nearest sample. Windows
 /// (`Window_propagation_solver`, `Face_cone::copy` set): a copy's value is the
 /// lowest of its windows', each the length of a real path (straight from the
@@ -113,7 +113,7 @@ class Face_cone_field
 {
 public:
   Face_cone_field(const Face_plane& plane, const Face_cone* cones, std::size_t count,
-                  const std::vector<std::array<double, 3> >& samples = Exact_solver::cone_samples())
+                  const std::vector<std::array<double, 3> >& samples = Cone_samples::cone_samples())
       : plane_(plane), cones_(cones), count_(count), samples_(&samples)
   {
     windows_ = count > 0 && cones[0].copy != Face_cone::no_copy;
