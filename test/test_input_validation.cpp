@@ -845,6 +845,364 @@ TEST_CASE("file errors: malformed or truncated PLY", "[input][file][ply]")
 }
 
 // ---------------------------------------------------------------------------
+// Sizes the file cannot hold (issue 41: the allocation bounded by the input)
+
+namespace {
+
+// Appends the bytes of x in the file's byte order (the test machines are
+// little-endian, x86-64).
+template <class T>
+void append_bytes(std::string& out, T x, bool big_endian)
+{
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &x, sizeof(T));
+  if(big_endian)
+    std::reverse(bytes, bytes + sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+// The tetrahedron in binary PLY, its face lists counted by `Count` (of PLY
+// type `count_type`): face j announces counts[j] indices (and lists its 3).
+template <class Count>
+std::string binary_ply_counts(bool big_endian, const char* count_type, const std::array<Count, 4>& counts)
+{
+  const Soup s = tetrahedron();
+  std::string out = std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") +
+                    " 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                    "element face 4\nproperty list " + count_type + " int vertex_indices\nend_header\n";
+  for(const auto& p : s.points)
+    for(double x : p)
+      append_bytes(out, static_cast<float>(x), big_endian);
+  for(std::size_t j = 0; j < 4; ++j)
+  {
+    append_bytes(out, counts[j], big_endian);
+    for(long long i : s.faces[j])
+      append_bytes(out, static_cast<std::int32_t>(i), big_endian);
+  }
+  return out;
+}
+
+// The tetrahedron in ASCII PLY, with `count_type` counts, the faces as given.
+std::string ascii_ply_faces(const char* count_type, const std::string& faces)
+{
+  return std::string("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                     "element face 4\nproperty list ") + count_type + " int vertex_indices\nend_header\n" +
+         "0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces;
+}
+
+// A binary OFF file (big-endian, as CGAL reads it: no color count after a
+// face): the counts, then the tetrahedron's vertices and `faces` (each its
+// size, then its indices).
+std::string binary_off(std::int32_t nv, std::int32_t nf, const std::vector<std::vector<std::int32_t>>& faces)
+{
+  std::string out = "OFF BINARY\n";
+  for(std::int32_t count : {nv, nf, 0})
+    append_bytes(out, count, true);
+  for(const auto& p : tetrahedron().points)
+    for(double x : p)
+      append_bytes(out, static_cast<float>(x), true);
+  for(const auto& f : faces)
+    for(std::int32_t i : f)
+      append_bytes(out, i, true);
+  return out;
+}
+
+struct File_case
+{
+  const char* name;
+  std::string content;
+  const char* needle;
+};
+
+// Each file is refused with Mesh_file_error, a one-line message that holds
+// the needle and the file's name.
+void check_refused(const std::vector<File_case>& cases, const std::string& filename)
+{
+  Temp_dir dir;
+  for(const File_case& c : cases)
+  {
+    INFO(c.name);
+    const std::string path = dir.write(filename, c.content);
+    Mesh tm;
+    const std::string msg = message_of<Mesh_file_error>([&] { Geodesic_ridge::IO::read_triangle_mesh(path, tm); });
+    CHECK_THAT(msg, Contains(c.needle));
+    CHECK_THAT(msg, Contains(filename));
+    CHECK(is_one_line(msg));
+  }
+}
+
+} // namespace
+
+TEST_CASE("file errors: a PLY list longer than the rest of the file is refused before it is allocated",
+          "[input][file][ply]")
+{
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  const std::string tail = faces.substr(faces.find('\n') + 1); // faces 1 to 3
+  std::string binary_cut = binary_ply_counts<std::int32_t>(false, "int", {3, 3, 3, 3});
+  binary_cut.resize(binary_cut.size() - 14); // in the last face's count
+  const std::vector<File_case> cases = {
+    // CGAL's reader resized the list to 1.9e9 ints (7.6 GB) before reading one
+    {"ASCII, a huge count", ascii_ply_faces("int", "1900000000 0 2 1\n" + tail),
+     "element 'face' item 0: list 'vertex_indices' announces 1900000000 values, which the file cannot hold "
+     "(31 bytes left, at least 2 per value)"},
+    {"ASCII, a count over the range of int, which CGAL's reader saturates",
+     ascii_ply_faces("int", "3 0 2 1\n99999999999 0 1 3\n3 0 3 2\n3 1 2 3\n"),
+     "element 'face' item 1: list 'vertex_indices' announces 2147483647 values"},
+    {"ASCII, an unsigned count of -1, which CGAL's reader reads as 2^32 - 1",
+     ascii_ply_faces("uint", "-1 0 2 1\n" + tail), "announces 4294967295 values, which the file cannot hold"},
+    {"ASCII, a negative count", ascii_ply_faces("int", "-1 0 2 1\n" + tail),
+     "element 'face' item 0: list 'vertex_indices' announces -1 values, which the file cannot hold (a negative count)"},
+    // (CGAL's reader reads numbers, not words: "1-3" is 1 then -3, the count)
+    {"ASCII, a negative count glued to a coordinate",
+     "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+     "element face 4\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1-3 0 2 1\n" + tail,
+     "element 'face' item 0: list 'vertex_indices' announces -3 values, which the file cannot hold (a negative count)"},
+    {"ASCII, fewer values than the last count", ascii_ply_faces("int", "3 0 2 1\n3 0 1 3\n3 0 3 2\n5 1 2 3\n"),
+     "element 'face' item 3: list 'vertex_indices' announces 5 values, which the file cannot hold"},
+    // CGAL's reader took the count from uninitialized memory there
+    {"ASCII, the file ends before a count", ascii_ply_faces("int", "3 0 2 1\n3 0 1 3\n3 0 3 2\n"),
+     "element 'face' item 3: the file ends before the count of list 'vertex_indices'"},
+    {"binary little-endian, a huge unsigned count",
+     binary_ply_counts<std::uint32_t>(false, "uint", {3, 4000000000u, 3, 3}),
+     "element 'face' item 1: list 'vertex_indices' announces 4000000000 values, which the file cannot hold "
+     "(44 bytes left, 4 per value)"},
+    {"binary big-endian, a huge count", binary_ply_counts<std::int32_t>(true, "int", {1900000000, 3, 3, 3}),
+     "element 'face' item 0: list 'vertex_indices' announces 1900000000 values, which the file cannot hold "
+     "(60 bytes left, 4 per value)"},
+    {"binary big-endian, a negative 16-bit count", binary_ply_counts<std::int16_t>(true, "short", {3, 3, -3, 3}),
+     "element 'face' item 2: list 'vertex_indices' announces -3 values, which the file cannot hold (a negative count)"},
+    {"binary, the file ends in a count", binary_cut,
+     "element 'face' item 3: the file ends before the count of list 'vertex_indices'"},
+    // (CGAL's reader takes the body as part of the header, and reads the
+    // items from the failed stream)
+    {"no end_header", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nelement tristrips 1\n"
+                      "property list int int vertex_indices\n3 0 1 2\n",
+     "malformed or truncated PLY header: no 'end_header' line"},
+  };
+  check_refused(cases, "bad.ply");
+}
+
+TEST_CASE("a valid PLY file reads as before: ASCII, binary of either byte order, with extra properties",
+          "[input][file][ply]")
+{
+  // the shuffled octahedron of the index order test, with properties around
+  // the coordinates and the index lists, and elements before and after
+  const std::array<std::array<double, 3>, 6> corners = {
+    {{0, 0, -1}, {1, 0, 0}, {0, -1, 0}, {-1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  Soup s;
+  s.points.assign(corners.begin(), corners.end());
+  s.faces = {{1, 4, 5}, {4, 3, 5}, {3, 2, 5}, {2, 1, 5}, {4, 1, 0}, {3, 4, 0}, {2, 3, 0}, {1, 2, 0}};
+  REQUIRE_NOTHROW(Geodesic_ridge::validate_triangle_soup(s.cgal_points(), s.cgal_faces()));
+  const std::string header_start = "ply\nformat ";
+  const std::string header_rest =
+    " 1.0\ncomment extra properties\nelement camera 2\nproperty float view_x\nproperty list uchar short path\n"
+    "element vertex 6\nproperty float nx\nproperty double x\nproperty double y\nproperty double z\n"
+    "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty list uint float weights\n"
+    "element face 8\nproperty uchar flags\nproperty list uchar int vertex_indices\n"
+    "property list ushort float texcoord\nproperty int material\n"
+    "element material 1\nproperty list uchar char name\nend_header\n";
+  auto write = [&](int format) {
+    const bool big = format == 2;
+    std::string out = header_start + (format == 0 ? "ascii" : big ? "binary_big_endian" : "binary_little_endian") +
+                      header_rest;
+    std::ostringstream text;
+    for(int c = 0; c < 2; ++c) // camera: view_x, path (3 shorts)
+      if(format == 0)
+        text << "0.5 3 -1 0 700\n";
+      else
+      {
+        append_bytes(out, 0.5f, big);
+        append_bytes(out, std::uint8_t(3), big);
+        for(std::int16_t v : {-1, 0, 700})
+          append_bytes(out, v, big);
+      }
+    for(std::size_t i = 0; i < 6; ++i) // vertex: nx, x, y, z, rgb, i + 1 weights
+      if(format == 0)
+      {
+        text << "-0.25 " << number(s.points[i][0]) << " " << number(s.points[i][1]) << " " << number(s.points[i][2])
+             << " 255 128 0 " << i + 1;
+        for(std::size_t k = 0; k <= i; ++k)
+          text << " 0.125";
+        text << "\n";
+      }
+      else
+      {
+        append_bytes(out, -0.25f, big);
+        for(double x : s.points[i])
+          append_bytes(out, x, big);
+        for(std::uint8_t c : {255, 128, 0})
+          append_bytes(out, c, big);
+        append_bytes(out, static_cast<std::uint32_t>(i + 1), big);
+        for(std::size_t k = 0; k <= i; ++k)
+          append_bytes(out, 0.125f, big);
+      }
+    for(const auto& f : s.faces) // face: flags, the indices, 6 texture coordinates, material
+      if(format == 0)
+        text << "7 3 " << f[0] << " " << f[1] << " " << f[2] << " 6 0 0 1 0 0 1 -2\n";
+      else
+      {
+        append_bytes(out, std::uint8_t(7), big);
+        append_bytes(out, std::uint8_t(3), big);
+        for(long long i : f)
+          append_bytes(out, static_cast<std::int32_t>(i), big);
+        append_bytes(out, std::uint16_t(6), big);
+        for(float t : {0.f, 0.f, 1.f, 0.f, 0.f, 1.f})
+          append_bytes(out, t, big);
+        append_bytes(out, std::int32_t(-2), big);
+      }
+    if(format == 0) // material: a name of 4 chars
+      text << "4 103 111 108 100\n";
+    else
+    {
+      append_bytes(out, std::uint8_t(4), big);
+      out += "gold";
+    }
+    return out + text.str();
+  };
+  Temp_dir dir;
+  for(int format : {0, 1, 2})
+  {
+    INFO("format " << format);
+    const std::string path = dir.write("extra.ply", write(format));
+    std::vector<Point_3> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    REQUIRE(CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)));
+    CHECK(points == s.cgal_points());
+    CHECK(polygons == s.cgal_faces());
+    Mesh tm;
+    REQUIRE_NOTHROW(Geodesic_ridge::IO::read_triangle_mesh(path, tm));
+    REQUIRE(tm.number_of_vertices() == 6);
+    REQUIRE(tm.number_of_faces() == 8);
+    for(std::size_t i = 0; i < 6; ++i)
+      CHECK(tm.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(i))) == points[i]);
+    for(std::size_t j = 0; j < 8; ++j)
+    {
+      std::vector<std::size_t> around;
+      for(auto v : CGAL::vertices_around_face(tm.halfedge(Mesh::Face_index(static_cast<Mesh::size_type>(j))), tm))
+        around.push_back(v.idx());
+      std::rotate(around.begin(), std::find(around.begin(), around.end(), polygons[j][0]), around.end());
+      CHECK(around == polygons[j]);
+    }
+  }
+  SECTION("the check reads a large binary file in chunks: a list across a chunk's end, a file without a last newline")
+  {
+    // a strip of 2n triangles whose lists cross the 1 MB chunks of the walk
+    const int n = 60000;
+    std::string out = "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(2 * n + 2) +
+                      "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
+                      std::to_string(2 * n) + "\nproperty list uchar int vertex_indices\n"
+                      "property list uchar uchar pad\nend_header\n";
+    for(int i = 0; i <= n; ++i)
+      for(int k = 0; k < 2; ++k)
+        for(float x : {float(i), float(k), 0.f})
+          append_bytes(out, x, false);
+    for(int i = 0; i < n; ++i)
+      for(const std::array<int, 3>& t : {std::array<int, 3>{2 * i, 2 * i + 2, 2 * i + 1},
+                                          std::array<int, 3>{2 * i + 1, 2 * i + 2, 2 * i + 3}})
+      {
+        append_bytes(out, std::uint8_t(3), false);
+        for(int v : t)
+          append_bytes(out, std::int32_t(v), false);
+        append_bytes(out, std::uint8_t(i % 7), false);
+        out.append(static_cast<std::size_t>(i % 7), 'p');
+      }
+    REQUIRE(out.size() > 2000000);
+    Mesh tm;
+    REQUIRE_NOTHROW(Geodesic_ridge::IO::read_triangle_mesh(dir.write("strip.ply", out), tm));
+    CHECK(tm.number_of_faces() == static_cast<Mesh::size_type>(2 * n));
+    // the same with its last list cut: refused, named
+    const std::string cut = out.substr(0, out.size() - 2);
+    const std::string msg = message_of<Mesh_file_error>(
+      [&] { Geodesic_ridge::IO::read_triangle_mesh(dir.write("cut.ply", cut), tm); });
+    CHECK_THAT(msg, Contains("element 'face' item " + std::to_string(2 * n - 1) + ": list 'pad' announces"));
+  }
+}
+
+TEST_CASE("file errors: an OFF face or vertex count larger than the file is refused before it is allocated",
+          "[input][file][off]")
+{
+  const std::string verts = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const std::string tail = "3 0 1 3\n3 0 3 2\n3 1 2 3\n"; // faces 1 to 3
+  const std::vector<std::vector<std::int32_t>> faces = {{3, 0, 2, 1}, {3, 0, 1, 3}, {3, 0, 3, 2}, {3, 1, 2, 3}};
+  std::string binary_cut = binary_off(4, 4, faces);
+  binary_cut.resize(binary_cut.size() - 16); // before the last face's size
+  const std::vector<File_case> cases = {
+    // (COFF: not a plain OFF file, CGAL's reader reads it; it converted the
+    // size, a double, to size_t and resized the face to it)
+    {"COFF, a face size of 1e121", "COFF\n4 4 0\n" + verts + "1e121 0 2 1\n" + tail,
+     "line 7: face 0 announces 1e121 vertices, which the file cannot hold (31 bytes left, at least 2 per index)"},
+    {"COFF, a negative face size", "COFF\n4 4 0\n" + verts + "-8 0 2 1\n" + tail,
+     "line 7: face 0 announces -8 vertices, a negative count"},
+    {"COFF, comments and blank lines before a face size of 3e9",
+     "COFF\n4 4 0\n# the vertices\n" + verts +
+       "\n3 0 2 1 # the first face\n  # a comment\n\n+3e9 0 1 3\n3 0 3 2\n3 1 2 3\n",
+     "line 12: face 1 announces +3e9 vertices, which the file cannot hold"},
+    // (CGAL's scanner reads colors at indices it derives from the numbers of
+    // a line and of the lines before: out of bounds there; found by fuzz/)
+    {"COFF, a vertex of one number", "COFF\n4 4 0\n0 0 0\n1 0 0\n0gggg 1 0\n0 0 1\n3 0 2 1\n" + tail,
+     "line 5: vertex 2 has 1 number(s), expected 3 at least"},
+    {"COFF, a vertex without a color after one with",
+     "COFF\n4 4 0\n0 0 0 255 0 0\n1 0 0\n0 1 0 0 0 255\n0 0 1 9 9 9\n3 0 2 1\n" + tail,
+     "line 4: vertex 1 has 0 color value(s) after one with colors"},
+    {"COFF, a negative color index", "COFF\n4 4 0\n0 0 0 3\n1 0 0 -5\n0 1 0 7\n0 0 1 9\n3 0 2 1\n" + tail,
+     "line 4: vertex 1 has 1 color value(s) after one with colors"},
+    {"COFF, a face without a color after one with",
+     "COFF\n4 4 0\n" + verts + "3 0 2 1 0.5 0.5 0.5\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+     "line 8: face 1 has 0 color value(s) after one with colors"},
+    {"COFF, fewer vertex lines than the header announces", "COFF\n4 4 0\n0 0 0 1 1 1\n1 0 0 1 1 1\n",
+     "file is truncated: the header announces 4 vertices, but it ends after 2"},
+    {"STOFF, texture coordinates without colors", "STOFF\n4 4 0\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n0 0 1 1 1\n"
+     "3 0 2 1\n" + tail, "texture coordinates without colors"},
+    // (an assertion of CGAL's reader, an exception in a build with assertions)
+    {"4OFF, a vertex of w = 0", "4OFF\n4 4 0\n0 0 0 1\n1 0 0 1\n0 1 0 0\n0 0 1 1\n3 0 2 1\n" + tail,
+     "line 5: vertex 2 has the homogeneous coordinate w = 0"},
+    // (an "OFF" file: the line-by-line diagnosis names the line, as for the
+    // files CGAL's reader refuses)
+    {"OFF, a face size of 1e121 (not a plain file either)", "OFF\n4 4 0\n" + verts + "1e121 0 2 1\n" + tail,
+     "line 7: face 0: '1e121' is not a vertex count"},
+    {"OFF, a face size of 1e9 on a short line", "OFF\n4 4 0\n" + verts + "1000000000 0 2 1\n" + tail,
+     "line 7: face 0 announces 1000000000 vertices but lists 3"},
+    // counts that the plain parse of the header does not read
+    {"counts over several lines", "OFF\n2000000000\n4 0\n" + verts + "3 0 2 1\n" + tail,
+     "the header announces 2000000000 vertices and 4 faces, which take at least"},
+    {"binary, a huge vertex count", binary_off(2000000000, 4, faces),
+     "the header announces 2000000000 vertices and 4 faces, which take at least"},
+    {"binary, a huge face size", binary_off(4, 4, {{2000000000, 0, 2, 1}, {3, 0, 1, 3}, {3, 0, 3, 2}, {3, 1, 2, 3}}),
+     "binary OFF, byte 71: face 0 announces 2000000000 vertices, which the file cannot hold (60 bytes left, 4 per "
+     "index)"},
+    {"binary, a negative face size", binary_off(4, 4, {{3, 0, 2, 1}, {-5, 0, 1, 3}, {3, 0, 3, 2}, {3, 1, 2, 3}}),
+     "binary OFF, byte 87: face 1 announces -5 vertices, a negative count"},
+    // (CGAL's reader took the size from uninitialized memory there)
+    {"binary, the file ends before a face size", binary_cut, "face 3: the file ends before its vertex count"},
+  };
+  check_refused(cases, "bad.off");
+
+  SECTION("the same files with sizes the file holds read as before")
+  {
+    Temp_dir dir;
+    const std::vector<std::string> good = {
+      "COFF\n4 4 0\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n0 0 1 9 9 9\n3 0 2 1\n" + tail,
+      "COFF\n4 4 0\n# the vertices\n" + verts + "\n3 0 2 1 # the first face\n  # a comment\n\n+3 0 1 3\n3 0 3 2\n"
+      "3.7 1 2 3\n",
+      "COFF\n4 4 0\n0 0 0 3\n1 0 0 0\n0 1 0 7\n0 0 1 200\n3 0 2 1 1\n3 0 1 3 0.5 0.5 0.5\n3 0 3 2 9 9 9 9\n"
+      "3 1 2 3 0\n",
+      "STCOFF\n4 4 0\n0 0 0 255 0 0 0 0\n1 0 0 255 0 0 1 0\n0 1 0 0 255 0 0 1\n0 0 1 0 0 255 1 1\n3 0 2 1\n" +
+        tail,
+      "OFF\n4\n4\n0\n" + verts + "3 0 2 1\n" + tail,
+      "4OFF\n4 4 0\n0 0 0 1\n2 0 0 2\n0 1 0 1\n0 0 -3 -3\n3 0 2 1\n" + tail,
+      binary_off(4, 4, faces),
+    };
+    for(const std::string& content : good)
+    {
+      INFO(content);
+      Mesh tm;
+      REQUIRE_NOTHROW(Geodesic_ridge::IO::read_triangle_mesh(dir.write("good.off", content), tm));
+      CHECK(tm.number_of_faces() == 4);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
 // Index order and the repository's meshes
 
 TEST_CASE("vertex i and face j of the file are vertex i and face j of the mesh", "[input][order]")

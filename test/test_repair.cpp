@@ -25,6 +25,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <string>
@@ -228,10 +229,95 @@ std::multiset<std::array<std::size_t, 3>> file_triangles(const Mesh& tm, const M
   return result;
 }
 
+// The triangles of CGAL's triangulate_faces on the polygon mesh of `s`, as
+// cyclic triples of its vertices, starting at the smallest.
+std::multiset<std::array<std::size_t, 3>> cgal_triangles(const Soup& s)
+{
+  Mesh polygons;
+  for(const Point_3& p : s.points)
+    polygons.add_vertex(p);
+  for(const auto& f : s.faces)
+  {
+    std::vector<Mesh::Vertex_index> vs;
+    for(std::size_t i : f)
+      vs.push_back(vertex(i));
+    REQUIRE(polygons.add_face(vs) != Mesh::null_face());
+  }
+  REQUIRE(PMP::triangulate_faces(polygons));
+  std::multiset<std::array<std::size_t, 3>> cgal;
+  for(Mesh::Face_index f : polygons.faces())
+  {
+    std::array<std::size_t, 3> t;
+    std::size_t k = 0;
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(polygons.halfedge(f), polygons))
+      t[k++] = v.idx();
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    cgal.insert(t);
+  }
+  return cgal;
+}
+
 Map read(const Soup& s, Mesh& tm, bool repair = false)
 {
   const Temp_file file("mesh.off", to_off(s));
   return Geodesic_ridge::IO::read_triangle_mesh(file.path(), tm, gp::repair(repair));
+}
+
+// An octahedron whose face (1,0,x) below edge 0-2 is split at the edge's
+// midpoint m (vertex 6), the gap closed by the cap (0, m, 2), face 9: exactly
+// collinear.
+Soup octahedron_with_cap()
+{
+  Soup s = octahedron();
+  std::size_t below = 0, above = 0;
+  for(std::size_t j = 0; j < s.faces.size(); ++j)
+  {
+    const auto& f = s.faces[j];
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      if(f[k] == 2 && f[(k + 1) % 3] == 0) below = j;
+      if(f[k] == 0 && f[(k + 1) % 3] == 2) above = j;
+    }
+  }
+  REQUIRE(below != above); // the octahedron is closed: edge 0-2 has a face on each side
+  const std::size_t x = s.faces[below][0] + s.faces[below][1] + s.faces[below][2] - 2; // its third vertex
+  s.points.emplace_back(0.5, 0.5, 0); // vertex 6: the midpoint of 0-2
+  s.faces[below] = {2, 6, x};
+  s.faces.push_back({6, 0, x});
+  s.faces.push_back({0, 6, 2}); // face 9: the cap
+  return s;
+}
+
+// A closed tetrahedron away from the origin (faces 0 to 3) and, as face 4, a
+// polygon of the given corners, each a vertex of its own (vertices 4 on).
+Soup tetrahedron_and_polygon(const std::vector<Point_3>& corners)
+{
+  Soup s;
+  s.points = {{0, 0, 50}, {1, 0, 50}, {0, 1, 50}, {0, 0, 51}};
+  s.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  s.faces.emplace_back();
+  for(const Point_3& p : corners)
+  {
+    s.faces.back().push_back(s.points.size());
+    s.points.push_back(p);
+  }
+  return s;
+}
+
+// Polygon 4 of `s` (tetrahedron_and_polygon()) is refused without the
+// repair, for the reason `why`, and removed by it: the tetrahedron is left.
+void check_untriangulable(const Soup& s, const std::string& why)
+{
+  Mesh tm;
+  CHECK_THAT(message_of<Repairable_mesh_error>([&] { read(s, tm); }),
+             Contains("face 4 (" + std::to_string(s.faces[4].size()) + " vertices) cannot be triangulated: " + why));
+  const Map map = read(s, tm, true);
+  CHECK(map.statistics().removed_degenerate_faces == 1);
+  CHECK(map.faces(4).empty());
+  CHECK(tm.number_of_faces() == 4);
+  CHECK(tm.number_of_vertices() == 4);
+  CHECK_NOTHROW(Geodesic_ridge::validate_triangle_mesh(tm));
+  check_against_file(tm, map, s);
 }
 
 } // namespace
@@ -263,28 +349,7 @@ TEST_CASE("polygons are triangulated on reading by CGAL's rule, face j staying i
   check_against_file(tm, map, s);
 
   // the same triangles as CGAL's triangulate_faces on the polygon mesh
-  Mesh polygons;
-  for(const Point_3& p : s.points)
-    polygons.add_vertex(p);
-  for(const auto& f : s.faces)
-  {
-    std::vector<Mesh::Vertex_index> vs;
-    for(std::size_t i : f)
-      vs.push_back(vertex(i));
-    REQUIRE(polygons.add_face(vs) != Mesh::null_face());
-  }
-  REQUIRE(PMP::triangulate_faces(polygons));
-  std::multiset<std::array<std::size_t, 3>> cgal;
-  for(Mesh::Face_index f : polygons.faces())
-  {
-    std::array<std::size_t, 3> t;
-    std::size_t k = 0;
-    for(Mesh::Vertex_index v : CGAL::vertices_around_face(polygons.halfedge(f), polygons))
-      t[k++] = v.idx();
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    cgal.insert(t);
-  }
-  CHECK(file_triangles(tm, map) == cgal);
+  CHECK(file_triangles(tm, map) == cgal_triangles(s));
 
   SECTION("a vertex out of the plane of its polygons makes them non-planar")
   {
@@ -406,25 +471,7 @@ TEST_CASE("repair: a non-manifold edge is split where the faces allow it", "[rep
 TEST_CASE("repair: degenerate faces are removed, and the faces around them keep a file face that holds them",
           "[repair][degenerate]")
 {
-  // An octahedron whose face (1,0,x) below edge 0-2 is split at the edge's
-  // midpoint m, the gap closed by the cap (0, m, 2): exactly collinear.
-  Soup s = octahedron();
-  std::size_t below = 0, above = 0;
-  for(std::size_t j = 0; j < s.faces.size(); ++j)
-  {
-    const auto& f = s.faces[j];
-    for(std::size_t k = 0; k < 3; ++k)
-    {
-      if(f[k] == 2 && f[(k + 1) % 3] == 0) below = j;
-      if(f[k] == 0 && f[(k + 1) % 3] == 2) above = j;
-    }
-  }
-  REQUIRE(below != above); // the octahedron is closed: edge 0-2 has a face on each side
-  const std::size_t x = s.faces[below][0] + s.faces[below][1] + s.faces[below][2] - 2; // its third vertex
-  s.points.emplace_back(0.5, 0.5, 0); // vertex 6: the midpoint of 0-2
-  s.faces[below] = {2, 6, x};
-  s.faces.push_back({6, 0, x});
-  s.faces.push_back({0, 6, 2}); // face 9: the cap
+  const Soup s = octahedron_with_cap();
   Mesh tm;
   CHECK_THAT(message_of<Repairable_mesh_error>([&] { read(s, tm); }), Contains("face 9 is degenerate"));
   const Map map = read(s, tm, true);
@@ -505,6 +552,138 @@ TEST_CASE("repair: vertices at one position are merged; faces with repeated vert
   CHECK(map.faces(5).empty());
   CHECK(map.faces(0).size() + map.faces(4).size() == 1);
   check_against_file(tm, map, s);
+}
+
+TEST_CASE("repair: degenerate faces are removed when the file has an isolated vertex too", "[repair][degenerate]")
+{
+  // CGAL's remove_degenerate_faces() asserts that its mesh is valid, which a
+  // vertex of no face is not (fuzzed OBJ and OFF files): such vertices are
+  // removed before it
+  Soup s = octahedron_with_cap();
+  s.points.emplace_back(7, 7, 7);
+  Mesh tm;
+  const Map map = read(s, tm, true);
+  CHECK(map.statistics().removed_degenerate_faces == 1);
+  CHECK(map.statistics().removed_isolated_vertices == 1);
+  CHECK(map.faces(9).empty());
+  CHECK(map.vertices(7).empty());
+  CHECK_NOTHROW(Geodesic_ridge::validate_triangle_mesh(tm));
+  check_against_file(tm, map, s);
+}
+
+TEST_CASE("repair: a vertex CGAL adds while removing degenerate faces is given the file vertex at its position",
+          "[repair][degenerate]")
+{
+  // (found by fuzzing) four corners on the line x = y = 1: removing the flat
+  // faces, CGAL splits an edge at (1, 1, 1), vertex 6, with a vertex of its
+  // own, which had no file vertex (an index out of range in the map back)
+  Soup s;
+  s.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 4}, {1, 1, 0}, {0, 0, 2}, {1, 1, 5}, {1, 1, 1}, {0, 1, 1}};
+  s.faces = {{1}, {0, 3, 2, 1}, {1, 5, 6, 7}, {0, 1, 4, 4}, {0, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  Mesh tm;
+  const Map map = read(s, tm, true);
+  CHECK(map.statistics().removed_degenerate_faces == 2);
+  for(Mesh::Vertex_index v : tm.vertices())
+    CHECK(tm.point(v) == s.points[map.file_vertex(v, tm)]);
+  REQUIRE(map.vertices(6).size() == 1);
+  CHECK(tm.point(map.vertices(6)[0]) == s.points[6]);
+  // (the faces CGAL flipped across the quads, not planar, lie in no file
+  // face: their locations are not checked)
+  for(Mesh::Face_index f : tm.faces())
+    CHECK(map.file_face(f, tm) < s.faces.size());
+}
+
+// ---------------------------------------------------------------------------
+// Polygons CGAL's triangulation cannot take (issue 41: fuzzed files crashed in it)
+
+TEST_CASE("a polygon through a position twice is refused, and removed by the repair, not given to CGAL",
+          "[repair][polygons][untriangulable]")
+{
+  // The polygons of the fuzzed OBJ files on which CGAL's triangulate_face()
+  // failed its assertions (the repair's merge had made each repeated position
+  // one vertex): h0, h1 and h2 != halfedge_descriptor(), a Surface_mesh
+  // property index in range, and its constrained triangulation's vaa != vbb
+  // and "insert ok". Here each corner is a vertex of its own.
+  const std::vector<std::pair<std::vector<Point_3>, std::string>> polygons = {
+    {{{0, 15, 6}, {-1, 0, 0}, {1, 0, 0}, {-1, 0, 0}, {0, 0, -1}}, "5 and 7"},
+    {{{1, 1, 0}, {0, 0, 1}, {0, 1, 0}, {1, 1, 0}, {1, 0, 1}, {1, 11, 0}, {1, 1, 1}, {0, 1, 1}}, "4 and 7"},
+    {{{0, 4, 0}, {6, 1, 10}, {0, 4, 0}, {0, 0, 1}, {0, 0, 2}, {2, 6, 5}}, "4 and 6"},
+    {{{0, 0, 0}, {8, 1, 0}, {1, 1, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}}, "6 and 8"},
+    {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {0, 0, 1}}, "4 and 7"},
+    {{{6, 1, 1}, {0, 5, 0}, {0, 10, 1}, {0, 0, 2}, {0, 10, 1}}, "6 and 8"}};
+  for(const auto& p : polygons)
+  {
+    INFO("vertices " << p.second);
+    check_untriangulable(tetrahedron_and_polygon(p.first), "its vertices " + p.second + " are at the same position");
+  }
+  // with the vertex itself repeated, the soup's rules refuse it first
+  Soup s = tetrahedron_and_polygon(polygons[0].first);
+  s.faces[4][3] = s.faces[4][1];
+  Mesh tm;
+  CHECK_THAT(message_of<Repairable_mesh_error>([&] { read(s, tm); }), Contains("face 4 repeats vertex 5"));
+  CHECK(read(s, tm, true).statistics().removed_degenerate_faces == 1);
+  CHECK(tm.number_of_faces() == 4);
+}
+
+TEST_CASE("a polygon whose outline touches or crosses itself is refused, and removed by the repair",
+          "[repair][polygons][untriangulable]")
+{
+  std::vector<Point_3> pentagram;
+  for(int k = 0; k < 5; ++k)
+    pentagram.emplace_back(std::cos(4 * CGAL_PI * k / 5), std::sin(4 * CGAL_PI * k / 5), 0);
+  // a corner on another edge (CGAL's constrained triangulation looped
+  // forever), an edge folding back over the one before (a corner was lost),
+  // a pentagram (CGAL's triangulation computes the crossings, in a projection
+  // whose rounded predicates may contradict them: its "insert ok" assertion),
+  // and a polygon far from planar whose outline crosses itself only seen
+  // along its normal, as CGAL projects it (along x, its normal's largest
+  // coordinate, the outline is simple)
+  const std::vector<std::vector<Point_3>> polygons = {{{0, 0, 0}, {4, 0, 0}, {4, 2, 0}, {2, 0, 0}, {0, 2, 0}},
+                                                      {{0, 0, 0}, {2, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+                                                      pentagram,
+                                                      {{-2, 1, 3}, {3, 3, -3}, {-1, -3, 0}, {3, 0, 0}, {2, 0, 3}}};
+  for(std::size_t i = 0; i < polygons.size(); ++i)
+  {
+    INFO("polygon " << i);
+    check_untriangulable(tetrahedron_and_polygon(polygons[i]), "its outline touches or crosses itself");
+  }
+  // collinear corners and a null normal (an outline enclosing no area), quads too
+  check_untriangulable(tetrahedron_and_polygon({{0, 0, 0}, {1, 1, 1}, {3, 3, 3}, {2, 2, 2}, {-1, -1, -1}}),
+                       "its vertices are collinear");
+  check_untriangulable(tetrahedron_and_polygon({{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}}),
+                       "its normal is null (its outline encloses no area)");
+}
+
+TEST_CASE("simple polygons are still triangulated as CGAL does: non-convex, with straight corners, not planar",
+          "[repair][polygons]")
+{
+  // an L of 7 corners, one of them straight, in a tilted plane; bent out of
+  // it; with a corner a hair (not exactly) off another edge; far from planar,
+  // its outline crossing itself along x (its normal's largest coordinate)
+  // but not along its normal, as CGAL projects it
+  std::vector<Point_3> l_shape;
+  for(const auto& xy : std::vector<std::array<double, 2>>{{0, 0}, {1, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}})
+    l_shape.emplace_back(xy[0], xy[1], 0.3 * xy[0] + 0.7 * xy[1]);
+  std::vector<Point_3> bent = l_shape;
+  bent[4] = Point_3(1, 1, 3);
+  const std::vector<Point_3> hair = {{0, 0, 0}, {4, 0, 0}, {4, 2, 0}, {2, 1e-9, 0}, {0, 2, 0}};
+  const std::vector<Point_3> wild = {{2, 2, 1}, {0, 1, 3}, {2, -2, -1}, {-1, 1, 0}, {3, 1, 0}};
+  for(const auto& corners : {l_shape, bent, hair, wild})
+  {
+    Soup s;
+    s.points = corners;
+    s.faces.emplace_back(corners.size());
+    std::iota(s.faces[0].begin(), s.faces[0].end(), std::size_t(0));
+    INFO(to_off(s));
+    for(bool repair : {false, true})
+    {
+      Mesh tm;
+      const Map map = read(s, tm, repair);
+      CHECK(map.statistics().triangles_from_polygons == corners.size() - 2);
+      CHECK(map.statistics().removed_degenerate_faces == 0);
+      CHECK(file_triangles(tm, map) == cgal_triangles(s));
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------

@@ -179,11 +179,12 @@ inline void add_triangulation(const Triangulation& t, Repair_statistics& st)
 /// The rule is \cgal's `CGAL::Polygon_mesh_processing::triangulate_face()`: a
 /// quad is split along the diagonal that maximizes the dot product of the two
 /// triangles' normals; a larger polygon is triangulated by a constrained
-/// Delaunay triangulation in the plane of its normal (or, if that fails, by
-/// \cgal's hole filling). No vertex is added. The triangles keep the
-/// polygon's orientation. For a polygon whose vertices are not in one plane
-/// the diagonals change the surface; such polygons are counted
-/// (`Repair_statistics::non_planar_polygons`).
+/// Delaunay triangulation in the plane of its normal, which takes it only if
+/// its vertices are at distinct positions and its outline, seen along its
+/// normal, neither touches nor crosses itself (exact predicates). No vertex
+/// is added. The triangles keep the polygon's orientation. For a polygon
+/// whose vertices are not in one plane the diagonals change the surface;
+/// such polygons are counted (`Repair_statistics::non_planar_polygons`).
 ///
 /// Face numbering: the first triangle of face `j` is triangle `j`; the other
 /// triangles of the polygons come after the file's faces, polygon after
@@ -204,7 +205,9 @@ inline void add_triangulation(const Triangulation& t, Repair_statistics& st)
 ///         or a non-finite coordinate
 /// \throws Repairable_mesh_error if a face has fewer than three vertices,
 ///         repeats a vertex, or cannot be triangulated (its vertices are
-///         collinear): `repair_mesh()` removes such faces
+///         collinear; or, with more than four, two are at the same position,
+///         or its outline touches or crosses itself): `repair_mesh()` removes
+///         such faces
 template <class Point_3, class Polygon>
 Repaired_soup<Point_3> triangulate_polygons(const std::vector<Point_3>& points, const std::vector<Polygon>& polygons)
 {
@@ -233,7 +236,7 @@ Repaired_soup<Point_3> triangulate_polygons(const std::vector<Point_3>& points, 
   {
     const std::size_t j = t.failed.front();
     throw Repairable_mesh_error("face " + std::to_string(j) + " (" + std::to_string(polygons[j].size()) +
-                                " vertices) cannot be triangulated: its vertices are collinear");
+                                " vertices) cannot be triangulated: " + t.why_failed.front());
   }
   Repair_statistics st;
   ir::add_triangulation(t, st);
@@ -253,9 +256,10 @@ Repaired_soup<Point_3> triangulate_polygons(const std::vector<Point_3>& points, 
 ///    with fewer than three vertices are removed (the soup simplification of
 ///    `repair_polygon_soup()`);
 /// 3. polygons are triangulated as by `triangulate_polygons()`; a polygon
-///    that cannot be (collinear vertices) is removed as degenerate, and so are
-///    the triangles of a polygon that went twice through a vertex, if they
-///    repeat it;
+///    that cannot be (collinear vertices; or, with more than four, one that
+///    goes twice through a vertex or whose outline touches or crosses itself)
+///    is removed as degenerate, and so are the triangles of a quad that went
+///    twice through a vertex, if they repeat it;
 /// 4. faces on the same three vertices as an earlier face, in either
 ///    orientation, are removed (`merge_duplicate_polygons_in_polygon_soup()`);
 /// 5. the faces are oriented consistently and the non-manifold edges and
@@ -269,7 +273,8 @@ Repaired_soup<Point_3> triangulate_polygons(const std::vector<Point_3>& points, 
 ///    the faces around them); a face it changes gets the file face that holds
 ///    its centroid;
 /// 7. vertices used by no face are removed
-///    (`remove_isolated_points_in_polygon_soup()`).
+///    (`remove_isolated_points_in_polygon_soup()`; also before step 6, whose
+///    \cgal function needs a valid polygon mesh).
 ///
 /// Order: the vertices of the result are in the order of their file vertices
 /// (a copy made by a split right after the vertex it copies), and its faces in
@@ -314,8 +319,9 @@ Repaired_soup<Point_3> repair_mesh(const std::vector<Point_3>& points, const std
   st.split_non_manifold_vertices = o.non_manifold_vertices;
   st.added_vertex_copies = o.vertex_copies;
   st.reoriented_faces = static_cast<std::size_t>(std::count(o.reversed.begin(), o.reversed.end(), true));
+  st.removed_isolated_vertices = ir::remove_isolated_points(soup); // CGAL's step 6 needs a valid mesh
   st.removed_degenerate_faces += ir::remove_degenerate_faces(points, file_polygons, soup);
-  st.removed_isolated_vertices = ir::remove_isolated_points(soup);
+  st.removed_isolated_vertices += ir::remove_isolated_points(soup);
   ir::sort_in_file_order(soup);
   return ir::finish(points, soup, st);
 }

@@ -35,6 +35,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <new>
 #include <sstream>
 #include <stdexcept>
@@ -435,13 +436,151 @@ inline void check_file_can_be_opened(const std::string& filename)
                            (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
 }
 
+// std::isspace of the C locale, which CGAL's readers skip between values
+// (' ', or '\t' '\n' '\v' '\f' '\r', which follow each other)
+inline bool is_space(char c) { return c == ' ' || static_cast<unsigned char>(c - '\t') < 5; }
+
+// What operator>> of a number reads in libstdc++ (num_get), which CGAL's
+// ASCII readers call (its iformat() too, for a double), whitespace skipped:
+// the characters of `in` (peek(), -1 at the end, and next()) it takes.
+//
+// A float or a double: a sign, digits with one '.', an exponent ('e' after a
+// digit, a sign, digits). False if they are no number (the read fails); an
+// overflow fails too, but reads its characters all the same.
+template <class Cursor>
+bool read_float_characters(Cursor& in)
+{
+  int c = in.peek();
+  if(c == '+' || c == '-') { in.next(); c = in.peek(); }
+  bool digits = false, point = false;
+  for(;; in.next(), c = in.peek())
+  {
+    if(c >= '0' && c <= '9') digits = true;
+    else if(c == '.' && !point) point = true;
+    else break;
+  }
+  if(!digits) return false;
+  if(c != 'e' && c != 'E') return true;
+  in.next();
+  c = in.peek();
+  if(c == '+' || c == '-') { in.next(); c = in.peek(); }
+  bool exponent = false;
+  for(; c >= '0' && c <= '9'; in.next(), c = in.peek()) exponent = true;
+  return exponent;
+}
+
+// An integer: a sign, then decimal digits, all of them (also past an
+// overflow, where `magnitude` saturates). False if there is no digit.
+template <class Cursor>
+bool read_integer_characters(Cursor& in, bool& negative, unsigned long long& magnitude, bool& overflow)
+{
+  int c = in.peek();
+  negative = c == '-';
+  if(c == '+' || c == '-') { in.next(); c = in.peek(); }
+  magnitude = 0;
+  overflow = false;
+  bool digits = false;
+  for(; c >= '0' && c <= '9'; in.next(), c = in.peek())
+  {
+    digits = true;
+    if(magnitude > (std::numeric_limits<unsigned long long>::max() - 9) / 10) overflow = true;
+    else magnitude = 10 * magnitude + static_cast<unsigned long long>(c - '0');
+  }
+  return digits;
+}
+
+// The characters [p, last) as a cursor of the functions above.
+struct Characters
+{
+  const char* p;
+  const char* last;
+  int peek() const { return p != last ? static_cast<unsigned char>(*p) : -1; }
+  void next() { ++p; }
+};
+
+// The body of a PLY file, from `offset` on, read in chunks of 1 MB (a buffer
+// the size of the file would cost more than the walk over it, a fresh
+// allocation's pages; the small reads of a stream, more still).
+class Ply_body
+{
+public:
+  Ply_body(const std::string& filename, std::uintmax_t offset, std::uintmax_t file_size)
+    : in_(filename, std::ios::binary), buffer_(std::size_t(1) << 20), base_(offset), size_(file_size)
+  {
+    in_.seekg(static_cast<std::streamoff>(offset));
+  }
+
+  // The bytes of the file after the position.
+  std::uintmax_t left() const
+  {
+    const std::uintmax_t at = base_ + pos_;
+    return at < size_ ? size_ - at : 0;
+  }
+
+  // True if n bytes (at most 1 MB) are at data().
+  bool ensure(std::size_t n)
+  {
+    while(end_ - pos_ < n)
+      if(!refill(pos_)) return false;
+    return true;
+  }
+  const char* data() const { return buffer_.data() + pos_; }
+
+  void skip(std::uintmax_t n)
+  {
+    if(n <= end_ - pos_)
+    {
+      pos_ += static_cast<std::size_t>(n);
+      return;
+    }
+    n -= end_ - pos_;
+    base_ += end_;
+    pos_ = end_ = 0;
+    base_ += n;
+    in_.seekg(static_cast<std::streamoff>(n), std::ios::cur);
+  }
+
+  // The next character, -1 at the end of the file.
+  int peek()
+  {
+    if(pos_ == end_ && !refill(pos_)) return -1;
+    return static_cast<unsigned char>(buffer_[pos_]);
+  }
+  void next() { ++pos_; }
+
+private:
+  // Keeps the bytes from `from` on, at the front, and reads after them; false
+  // at the end of the file.
+  bool refill(std::size_t from)
+  {
+    const std::size_t kept = end_ - from; // (a few bytes at most)
+    std::memmove(buffer_.data(), buffer_.data() + from, kept);
+    base_ += from;
+    pos_ -= (std::min)(pos_, from);
+    end_ = kept;
+    if(!in_) return false;
+    in_.read(buffer_.data() + kept, static_cast<std::streamsize>(buffer_.size() - kept));
+    end_ += static_cast<std::size_t>(in_.gcount());
+    return end_ > kept;
+  }
+
+  std::ifstream in_;
+  std::vector<char> buffer_;
+  std::size_t pos_ = 0, end_ = 0; // in buffer_
+  std::uintmax_t base_;           // the file offset of buffer_[0]
+  std::uintmax_t size_;
+};
+
 // The counts a header announces must fit in the file: CGAL's OFF reader
 // reserves the announced vertices before reading one (a 40-byte file whose
 // header announced 2e9 vertices ended in "out of memory"). Each element takes
-// at least a few bytes: an ASCII OFF vertex "x y z\n" 6, a face "0\n" 2; a PLY
-// item, in binary, its scalar properties and its lists' counts, in ASCII 2
-// bytes per property. A header that announces more than the file can hold is
-// refused before anything is allocated.
+// at least a few bytes: an ASCII OFF vertex "x y z\n" 6, a face "0\n" 2, a
+// binary one 12 and 4; a PLY item, in binary, its scalar properties and its
+// lists' counts, in ASCII 2 bytes per property (and no more items than
+// bytes). A header that announces more than the file can hold is refused
+// before anything is allocated. So is an OFF face or a PLY list whose size
+// the rest of the file cannot hold: CGAL's readers resize it to that size
+// before reading it.
 class Header_counts
 {
 public:
@@ -459,6 +598,27 @@ public:
     else if(format == Mesh_file_format::PLY) check_PLY();
   }
 
+  // The face sizes of an OFF file, as CGAL's reader reads them: a walk over
+  // the whole file, so only for the files that go to that reader
+  // (`read_plain_OFF()` checks its own).
+  void check_OFF_faces() const
+  {
+    std::ifstream in(filename_, std::ios::binary);
+    CGAL::File_header_OFF header(false);
+    std::uintmax_t start = 0;
+    if(size_ == 0 || !read_OFF_header(in, header, start) || start >= size_) return;
+    in.clear();
+    in.seekg(0);
+    std::string text(static_cast<std::size_t>(size_), '\0');
+    in.read(&text[0], static_cast<std::streamsize>(text.size()));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    if(start >= text.size()) return;
+    if(header.binary())
+      check_binary_OFF_faces(header, text, static_cast<std::size_t>(start));
+    else
+      check_ascii_OFF_faces(header, text, static_cast<std::size_t>(start));
+  }
+
 private:
   [[noreturn]] void refuse(const std::string& announced, std::uintmax_t least) const
   {
@@ -466,8 +626,29 @@ private:
                             " bytes, but the file has " + std::to_string(size_) + ": refused before reading");
   }
 
-  // ASCII OFF and its variants (COFF, NOFF, ...): the keyword, then "V F E"
+  // OFF and its variants (COFF, NOFF, ..., binary)
   void check_OFF() const
+  {
+    check_OFF_counts_line();
+    // then the counts as CGAL's reader reads them, which the line above may
+    // not hold: they may span lines, or be binary (after "BINARY")
+    std::ifstream in(filename_, std::ios::binary);
+    CGAL::File_header_OFF header(false);
+    std::uintmax_t start = 0;
+    if(!read_OFF_header(in, header, start)) return;
+    const long double nv = static_cast<long double>(header.size_of_vertices()),
+                      nf = static_cast<long double>(header.size_of_facets());
+    const long double least = header.binary() ? OFF_binary_vertex_bytes(header) * nv + 4.0L * nf
+                                              : 6.0L * nv + 2.0L * nf;
+    const std::uintmax_t room = header.binary() ? size_ - (std::min)(size_, start) : size_;
+    if(least > static_cast<long double>(room))
+      refuse(std::to_string(header.size_of_vertices()) + " vertices and " + std::to_string(header.size_of_facets()) +
+               " faces",
+             static_cast<std::uintmax_t>((std::min)(least + (size_ - room), 1.8e19L)));
+  }
+
+  // "OFF" (or a variant) and "V F E" on the next line or on the keyword's
+  void check_OFF_counts_line() const
   {
     Token_lines lines(filename_);
     std::vector<std::string> t;
@@ -476,7 +657,6 @@ private:
     else if(!lines.next(t)) return;
     long long nv = 0, nf = 0;
     if(t.size() < 2 || !parse_integer(t[0], nv) || !parse_integer(t[1], nf) || nv < 0 || nf < 0) return;
-    // (a binary OFF's counts come after "BINARY": not parsed, so not checked)
     const long double least = 6.0L * nv + 2.0L * nf;
     if(!(least > static_cast<long double>(size_))) return;
     // the line-by-line diagnosis allocates only what is there and names
@@ -485,38 +665,275 @@ private:
     std::vector<std::vector<std::size_t>> polygons;
     diagnose_OFF(filename_, points, polygons);
     refuse(std::to_string(nv) + " vertices and " + std::to_string(nf) + " faces",
-             static_cast<std::uintmax_t>((std::min)(least, 1.8e19L)));
+           static_cast<std::uintmax_t>((std::min)(least, 1.8e19L)));
   }
 
-  static int scalar_bytes(const std::string& type)
+  // The header as CGAL's OFF reader reads it (File_header_OFF, its parser);
+  // false if that fails, or for SKEL and nOFF. `start` is where it stops.
+  bool read_OFF_header(std::ifstream& in, CGAL::File_header_OFF& header, std::uintmax_t& start) const
   {
-    if(type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-    if(type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-    if(type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
-      return 4;
-    if(type == "double" || type == "float64") return 8;
-    return 0;
+    in >> header;
+    if(!in || header.skel() || header.n_dimensional()) return false;
+    const std::streamoff position = in.tellg(); // (-1 at the end of the file)
+    start = position < 0 ? size_ : static_cast<std::uintmax_t>(position);
+    return true;
   }
+
+  // A vertex of a binary OFF file as CGAL's reader reads it: the point, its
+  // normal (NOFF) and its texture coordinates (ST), 4-byte floats, one more
+  // each in a homogeneous (4OFF) file; no color.
+  static int OFF_binary_vertex_bytes(const CGAL::File_header_OFF& header)
+  {
+    const int w = header.is_homogeneous() ? 1 : 0;
+    return 4 * (3 + w + (header.has_normals() ? 3 + w : 0) + (header.has_textures() ? 2 + w : 0));
+  }
+
+  // CGAL's ASCII OFF scanner reads each vertex and each face from the next
+  // line that is neither blank nor a '#' comment. A face's size is the first
+  // number of its line, read as a double (operator>>) and converted to
+  // size_t; the face is resized to it before its indices are read (-8 or
+  // 1e121: a huge size).
+  //
+  // With colors (COFF) or texture coordinates (ST), the scanner reads them
+  // at indices it derives from the count of numbers on the line, and on the
+  // lines before, without checking them (found by fuzz/): a line it would
+  // read out of bounds is refused as well. So is a homogeneous vertex (4OFF)
+  // of w = 0, on which CGAL's reader asserts.
+  void check_ascii_OFF_faces(const CGAL::File_header_OFF& header, const std::string& text, std::size_t p) const
+  {
+    const std::size_t n = text.size();
+    const auto header_end = text.begin() + static_cast<std::ptrdiff_t>(p);
+    std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), header_end, '\n'));
+    std::size_t first = 0, last = 0, first_line = 0;
+    // the line CGAL's scanner reads next is [first, last), line `first_line`
+    auto next_line = [&]() {
+      for(;;)
+      {
+        while(p < n && is_space(text[p]))
+          line += text[p++] == '\n' ? 1 : 0;
+        if(p == n) return false;
+        first = p;
+        first_line = line;
+        const std::size_t eol = text.find('\n', p);
+        last = eol == std::string::npos ? n : eol;
+        p = eol == std::string::npos ? n : eol + 1;
+        line += eol == std::string::npos ? 0 : 1;
+        if(text[first] != '#') return true;
+      }
+    };
+    auto where = [&] { return "line " + std::to_string(first_line) + ": "; };
+    std::string number;
+    // the numbers of the line as the scanner reads them (operator>> up to the
+    // first that fails, an overflow too)
+    std::vector<double> numbers;
+    auto read_numbers = [&] {
+      numbers.clear();
+      Characters c{text.data() + first, text.data() + last};
+      for(;;)
+      {
+        while(c.peek() != -1 && is_space(static_cast<char>(c.peek()))) c.next();
+        const char* const start = c.p;
+        if(c.peek() == -1 || !read_float_characters(c)) return;
+        number.assign(start, c.p);
+        const double x = std::strtod(number.c_str(), nullptr);
+        if(std::isinf(x)) return;
+        numbers.push_back(x);
+      }
+    };
+    // scan_color(): one number, an index in a color table (an int; the table
+    // is read before it if negative), or three
+    auto check_color = [&](std::size_t at, std::size_t values, const std::string& item) {
+      if(values >= 3 || (values == 1 && numbers[at] > -1 && numbers[at] < 2147483648.0)) return;
+      file_error(filename_, where() + item + " has " + std::to_string(values) +
+                              " color value(s) after one with colors: CGAL's reader takes 3 or 4, or 1 (a color index, "
+                              "not negative), and reads out of bounds otherwise");
+    };
+    const bool colors = header.has_colors(), textures = header.has_textures(), w = header.is_homogeneous();
+    const std::size_t h = w ? 1 : 0, color_at = 3 + h + (header.has_normals() ? 3 + h : 0);
+    const std::size_t need = color_at + (textures ? 2 + h : 0);
+    const std::size_t nv = header.size_of_vertices();
+    if(textures && !colors && nv > 0)
+      file_error(filename_, "texture coordinates without colors (ST but no C in the OFF keyword): CGAL's reader reads "
+                            "them at an uninitialized index");
+    bool vertex_colors = false, face_colors = false;
+    for(std::size_t i = 0; i < nv; ++i)
+    {
+      if(!next_line())
+      {
+        if(!colors) return; // (CGAL's reader fails on the missing vertex)
+        file_error(filename_, "file is truncated: the header announces " + std::to_string(nv) +
+                                " vertices, but it ends after " + std::to_string(i));
+      }
+      if(!colors && !w) continue;
+      read_numbers();
+      if(w && numbers.size() >= 4 && numbers[3] == 0)
+        file_error(filename_, where() + "vertex " + std::to_string(i) + " has the homogeneous coordinate w = 0");
+      if(!colors) continue;
+      if(numbers.size() < need)
+        file_error(filename_, where() + "vertex " + std::to_string(i) + " has " + std::to_string(numbers.size()) +
+                                " number(s), expected " + std::to_string(need) + " at least");
+      const std::size_t values = numbers.size() - need;
+      vertex_colors = vertex_colors || values != 0;
+      if(vertex_colors) check_color(color_at, values, "vertex " + std::to_string(i));
+    }
+    for(std::size_t j = 0; j < header.size_of_facets(); ++j)
+    {
+      if(!next_line()) return; // (CGAL's reader reads an empty face, then fails)
+      // (the line ends at a '#', where no number goes on)
+      Characters line_characters{text.data() + first, text.data() + n};
+      if(!read_float_characters(line_characters)) return; // (CGAL's reader fails there)
+      const std::size_t q = static_cast<std::size_t>(line_characters.p - text.data());
+      number.assign(text, first, q - first);
+      const double size = std::strtod(number.c_str(), nullptr);
+      if(std::isinf(size)) return; // (operator>> fails on an overflow: CGAL's reader fails there)
+      // each index takes 2 bytes at least (" 0")
+      if(size > -1 && size < static_cast<double>((n - q) / 2) + 1)
+      {
+        if(!colors) continue;
+        read_numbers();
+        const std::size_t k = static_cast<std::size_t>(size);
+        if(numbers.size() < k + 1) return; // (CGAL's reader fails on a missing index, before the color)
+        for(std::size_t m = 1; m <= k; ++m)
+          if(!(numbers[m] > -1 && numbers[m] < static_cast<double>(nv))) return; // (and on an index out of range)
+        const std::size_t values = numbers.size() - k - 1;
+        face_colors = face_colors || values != 0;
+        if(face_colors) check_color(k + 1, values, "face " + std::to_string(j));
+        continue;
+      }
+      // the line-by-line diagnosis of an "OFF" file says what is wrong on
+      // the line, as for the files CGAL's reader refuses (it allocates only
+      // what is there, and throws: the face is not what it announces)
+      std::vector<CGAL::Epick::Point_3> points;
+      std::vector<std::vector<std::size_t>> polygons;
+      diagnose_OFF(filename_, points, polygons);
+      file_error(filename_, where() + "face " + std::to_string(j) + " announces " + text.substr(first, q - first) +
+                              " vertices, " +
+                              (size <= -1 ? std::string("a negative count")
+                                          : "which the file cannot hold (" + std::to_string(n - q) +
+                                              " bytes left, at least 2 per index)"));
+    }
+  }
+
+  // CGAL's binary OFF scanner reads a face's size (a big-endian int32) and
+  // resizes the face to it, also when the file ended before it (from
+  // uninitialized memory). It asserts on a homogeneous vertex (4OFF) of w = 0,
+  // also one the file ends in.
+  void check_binary_OFF_faces(const CGAL::File_header_OFF& header, const std::string& text, std::size_t p) const
+  {
+    const std::size_t n = text.size();
+    const std::size_t vertex = static_cast<std::size_t>(OFF_binary_vertex_bytes(header));
+    const std::size_t nv = header.size_of_vertices();
+    if(nv > (n - p) / vertex)
+    {
+      if(!header.is_homogeneous()) return; // (CGAL's reader fails in the vertices)
+      file_error(filename_, "binary OFF: file is truncated: the header announces " + std::to_string(nv) +
+                              " vertices, but it ends after " + std::to_string((n - p) / vertex));
+    }
+    auto int32_at = [&](std::size_t at) {
+      std::uint32_t bits = 0;
+      for(int k = 0; k < 4; ++k)
+        bits = (bits << 8) | static_cast<unsigned char>(text[at + k]);
+      return bits;
+    };
+    for(std::size_t i = 0; header.is_homogeneous() && i < nv; ++i)
+      if((int32_at(p + vertex * i + 12) & 0x7fffffffu) == 0) // (w, the 4th float: +0 or -0)
+        file_error(filename_, "binary OFF: vertex " + std::to_string(i) + " has the homogeneous coordinate w = 0");
+    p += vertex * nv;
+    for(std::size_t j = 0; j < header.size_of_facets(); ++j)
+    {
+      const std::size_t at = p;
+      auto where = [&] { return "binary OFF, byte " + std::to_string(at) + ": face " + std::to_string(j); };
+      if(n - p < 4)
+        file_error(filename_, where() + ": the file ends before its vertex count");
+      const std::uint32_t bits = int32_at(p);
+      const std::int64_t size = bits < 0x80000000u ? std::int64_t(bits) : std::int64_t(bits) - (std::int64_t(1) << 32);
+      p += 4;
+      if(size == -1) return; // (CGAL's reader stops there)
+      if(size < 0)
+        file_error(filename_, where() + " announces " + std::to_string(size) + " vertices, a negative count");
+      if(static_cast<std::size_t>(size) > (n - p) / 4)
+        file_error(filename_, where() + " announces " + std::to_string(size) +
+                                " vertices, which the file cannot hold (" + std::to_string(n - p) +
+                                " bytes left, 4 per index)");
+      p += 4 * static_cast<std::size_t>(size);
+    }
+  }
+
+  // A PLY scalar type as CGAL's reader knows it: its size in bytes, 0 for a
+  // type it does not know (it then drops the property, and reads none of it).
+  struct Ply_type
+  {
+    int bytes = 0;
+    bool is_float = false, is_signed = false;
+  };
+
+  static Ply_type ply_type(const std::string& type)
+  {
+    auto make = [](int bytes, bool is_float, bool is_signed) {
+      Ply_type t;
+      t.bytes = bytes;
+      t.is_float = is_float;
+      t.is_signed = is_signed;
+      return t;
+    };
+    if(type == "char" || type == "int8") return make(1, false, true);
+    if(type == "uchar" || type == "uint8") return make(1, false, false);
+    if(type == "short" || type == "int16") return make(2, false, true);
+    if(type == "ushort" || type == "uint16") return make(2, false, false);
+    if(type == "int" || type == "int32") return make(4, false, true);
+    if(type == "uint" || type == "uint32") return make(4, false, false);
+    if(type == "float" || type == "float32") return make(4, true, true);
+    if(type == "double" || type == "float64") return make(8, true, true);
+    return Ply_type();
+  }
+
+  struct Ply_property
+  {
+    std::string name;
+    Ply_type type; // of a list: its items'
+    bool list = false;
+    Ply_type count; // of a list
+  };
+
+  struct Ply_element
+  {
+    std::string name;
+    std::size_t count = 0;                 // read as CGAL's reader does: "-1" is SIZE_MAX
+    long double least = 0;                 // bytes per item
+    std::vector<Ply_property> properties;  // those CGAL's reader reads
+  };
 
   void check_PLY() const
   {
     std::ifstream in(filename_, std::ios::binary);
     std::string line;
-    bool binary = false;
-    struct Element { std::string name; long long count = 0; long double least = 0; };
-    std::vector<Element> elements;
+    bool binary = false, ply = false, readable = true, ended = false;
+    int format = -1; // 0 ASCII, 1 little-endian, 2 big-endian, -1 none CGAL's reader knows
+    std::vector<Ply_element> elements;
     std::uintmax_t header = 0;
-    for(int lines = 0; std::getline(in, line) && lines < 100000; ++lines)
+    int lines = 0;
+    for(; lines < 100000 && std::getline(in, line); ++lines)
     {
       header += line.size() + 1;
       std::istringstream words(line);
       std::string keyword;
       words >> keyword;
-      if(keyword == "format") { std::string f; words >> f; binary = f != "ascii"; }
-      else if(keyword == "element")
+      if(lines == 0)
+        ply = keyword == "ply";
+      else if(lines == 1)
       {
-        Element e;
-        if(!(words >> e.name >> e.count) || e.count < 0) return; // (CGAL's reader says what is wrong)
+        // CGAL's reader takes the format from the second line, whatever its first word
+        std::string f, version;
+        readable = static_cast<bool>(words >> f >> version);
+        format = f == "ascii" ? 0 : f == "binary_little_endian" ? 1 : f == "binary_big_endian" ? 2 : -1;
+        binary = f != "ascii";
+      }
+      else if(keyword.empty())
+        readable = false; // (CGAL's reader fails on an empty header line)
+      if(keyword == "element")
+      {
+        Ply_element e;
+        if(!(words >> e.name >> e.count)) return; // (CGAL's reader says what is wrong)
         elements.push_back(e);
       }
       else if(keyword == "property" && elements.empty())
@@ -525,34 +942,242 @@ private:
         file_error(filename_, "PLY header: a property before any element (line " + std::to_string(lines + 1) + ")");
       else if(keyword == "property")
       {
-        std::string type;
-        words >> type;
-        if(type == "list") words >> type; // the count's type: at least the count is there
-        else if(std::string name; ply::is_vertex_element(elements.back().name) && words >> name &&
-                (name == "x" || name == "y" || name == "z") && type != "float" && type != "float32" &&
-                type != "double" && type != "float64")
-          // CGAL's point reader asserts (and without assertions dereferences
-          // null) on an integer coordinate (found by fuzz/)
-          file_error(filename_, "PLY header: vertex coordinate '" + name + "' is '" + type +
-                                "', not float or double (line " + std::to_string(lines + 1) + ")");
-        const int bytes = scalar_bytes(type);
-        if(bytes == 0) return;
-        elements.back().least += binary ? bytes : 2;
+        std::string type, name;
+        words >> type >> name;
+        Ply_property p;
+        if(type == "list") // "list COUNT ITEM NAME"; CGAL's reader takes integer counts only
+        {
+          std::string item;
+          words >> item >> p.name;
+          p.list = true;
+          p.count = ply_type(name);
+          p.type = ply_type(item);
+          if(p.count.is_float) p.count.bytes = 0;
+        }
+        else
+        {
+          if(ply::is_vertex_element(elements.back().name) && (name == "x" || name == "y" || name == "z") &&
+             type != "float" && type != "float32" && type != "double" && type != "float64")
+            // CGAL's point reader asserts (and without assertions dereferences
+            // null) on an integer coordinate (found by fuzz/)
+            file_error(filename_, "PLY header: vertex coordinate '" + name + "' is '" + type +
+                                    "', not float or double (line " + std::to_string(lines + 1) + ")");
+          p.name = name;
+          p.type = ply_type(type);
+        }
+        if(p.name.empty())
+          readable = false; // (CGAL's reader fails on it)
+        else if(p.type.bytes != 0 && (!p.list || p.count.bytes != 0))
+        {
+          elements.back().least += binary ? (p.list ? p.count.bytes : p.type.bytes) : 2;
+          elements.back().properties.push_back(p);
+        }
       }
       else if(keyword == "end_header")
       {
-        long double least = 0;
-        std::string announced;
-        for(const Element& e : elements)
-        {
-          least += e.least * e.count;
-          announced += (announced.empty() ? "" : ", ") + std::to_string(e.count) + " '" + e.name + "'";
-        }
-        if(least > static_cast<long double>(size_ - (std::min)(size_, header)))
-          refuse(announced, static_cast<std::uintmax_t>((std::min)(least + header, 1.8e19L)));
-        return;
+        ended = true;
+        break;
       }
     }
+    if(!ended)
+    {
+      // CGAL's reader takes the whole file as the header, then reads the
+      // items from the failed stream: a list sized from uninitialized memory
+      if(ply && lines < 100000)
+        file_error(filename_, "malformed or truncated PLY header: no 'end_header' line");
+      return;
+    }
+    long double least = 0;
+    std::string announced;
+    bool absurd = false;
+    const std::uintmax_t body = (std::min)(size_, header);
+    for(const Ply_element& e : elements)
+    {
+      least += e.least * e.count;
+      announced += (announced.empty() ? "" : ", ") + std::to_string(e.count) + " '" + e.name + "'";
+      // items of no property CGAL's reader knows take none of the bytes it
+      // reads, but it loops over them (and adds a point for each vertex item):
+      // more of them than the file has bytes is refused too
+      absurd = absurd || (e.least == 0 && e.count > size_ - body);
+    }
+    // (in ASCII the last value needs no separator after it)
+    if(absurd || least > static_cast<long double>(size_ - body) + (binary ? 0 : 1))
+      refuse(announced, static_cast<std::uintmax_t>((std::min)(least + header, 1.8e19L)));
+    if(ply && readable && format >= 0)
+      check_PLY_lists(elements, format, body);
+  }
+
+  // The integer CGAL's ASCII PLY reader reads, a list's count or a value:
+  // operator>> of its type (of short or unsigned short for a char, then
+  // narrowed, 0 if that fails), which saturates on an overflow (and fails),
+  // and negates an unsigned value modulo its range.
+  struct Ascii_integer
+  {
+    bool digits = false; // false: the reader reads 0 and fails
+    bool ok = false;     // the read does not fail
+    long long value = 0;
+  };
+
+  static Ascii_integer ascii_integer(Ply_body& body, const Ply_type& type)
+  {
+    Ascii_integer r;
+    bool negative = false, fail = false;
+    unsigned long long magnitude = 0;
+    if(!read_integer_characters(body, negative, magnitude, fail)) return r;
+    r.digits = true;
+    const int bits = 8 * (type.bytes == 1 ? 2 : type.bytes);
+    const unsigned long long max = type.is_signed ? (1ULL << (bits - 1)) - 1 : (1ULL << bits) - 1;
+    long long value = 0;
+    if(type.is_signed)
+    {
+      if(fail || magnitude > max + (negative ? 1 : 0))
+      {
+        fail = true;
+        value = negative ? -static_cast<long long>(max) - 1 : static_cast<long long>(max);
+      }
+      else
+        value = negative ? -static_cast<long long>(magnitude) : static_cast<long long>(magnitude);
+    }
+    else if(fail || magnitude > max)
+    {
+      fail = true;
+      value = static_cast<long long>(max);
+    }
+    else
+      value = static_cast<long long>(negative && magnitude != 0 ? max + 1 - magnitude : magnitude);
+    if(type.bytes == 1)
+      value = fail ? 0 : type.is_signed ? static_cast<signed char>(value) : static_cast<unsigned char>(value);
+    r.value = value;
+    r.ok = !fail;
+    return r;
+  }
+
+  // Reads a value as CGAL's ASCII PLY reader does; false where that fails (a
+  // float that overflows passes: the walk goes on, at worst refusing a file
+  // that reader refuses)
+  static bool ascii_value(Ply_body& body, const Ply_type& type)
+  {
+    return type.is_float ? read_float_characters(body) : ascii_integer(body, type).ok;
+  }
+
+  [[noreturn]] void refuse_list(const Ply_element& e, std::size_t item, const std::string& what) const
+  {
+    file_error(filename_, "malformed or truncated PLY: element '" + e.name + "' item " + std::to_string(item) + ": " +
+                            what);
+  }
+
+  // (CGAL's reader converts a negative count to a huge size_t)
+  void check_list_count(const Ply_element& e, std::size_t item, const Ply_property& p, long long count,
+                        std::uintmax_t left, bool ascii) const
+  {
+    // (count < 2^32: no overflow)
+    const std::uintmax_t per_value = static_cast<std::uintmax_t>(ascii ? 2 : p.type.bytes);
+    if(count >= 0 && static_cast<std::uintmax_t>(count) * per_value <= left) return;
+    refuse_list(e, item, "list '" + p.name + "' announces " + std::to_string(count) +
+                           " values, which the file cannot hold (" +
+                           (count < 0 ? std::string("a negative count")
+                                      : std::to_string(left) + " bytes left, " +
+                                          (ascii ? std::string("at least 2") : std::to_string(p.type.bytes)) +
+                                          " per value") +
+                           ")");
+  }
+
+  // CGAL's PLY reader (PLY_read_typed_list_with_typed_size::get) resizes a
+  // list to the count the file gives before it reads an item of it, and takes
+  // the count from uninitialized memory where the file ends. This walks the
+  // body as that reader does, item by item, and refuses a list the rest of
+  // the file cannot hold. Where the reader fails on its own (a value that is
+  // not a number, the file ending in a scalar), the walk stops: the reader
+  // reports it.
+  void check_PLY_lists(const std::vector<Ply_element>& elements, int format, std::uintmax_t offset) const
+  {
+    std::size_t stop = 0; // (nothing to check after the last list)
+    for(std::size_t i = 0; i < elements.size(); ++i)
+      for(const Ply_property& p : elements[i].properties)
+        if(p.list && elements[i].count > 0) stop = i + 1;
+    if(stop == 0) return;
+    Ply_body body(filename_, offset, size_);
+    for(std::size_t i = 0; i < stop; ++i)
+    {
+      const Ply_element& e = elements[i];
+      if(e.properties.empty()) continue;
+      if(format == 0 ? !walk_ascii(body, e) : !walk_binary(body, e, format == 2)) return;
+    }
+  }
+
+  // false where the walk stops
+  bool walk_ascii(Ply_body& body, const Ply_element& e) const
+  {
+    // (operator>> skips whitespace first; at the end of the file it fails,
+    // leaving the value it reads uninitialized)
+    auto at_value = [&] {
+      int c = body.peek();
+      for(; c != -1 && is_space(static_cast<char>(c)); c = body.peek()) body.next();
+      return c != -1;
+    };
+    for(std::size_t j = 0; j < e.count; ++j)
+      for(const Ply_property& q : e.properties)
+      {
+        if(!q.list)
+        {
+          if(!at_value() || !ascii_value(body, q.type)) return false;
+          continue;
+        }
+        if(!at_value()) refuse_list(e, j, "the file ends before the count of list '" + q.name + "'");
+        const Ascii_integer count = ascii_integer(body, q.count);
+        if(!count.digits) return false;
+        check_list_count(e, j, q, count.value, body.left(), true);
+        if(!count.ok) return false;
+        for(long long k = 0; k < count.value; ++k)
+        {
+          if(!at_value())
+            refuse_list(e, j, "list '" + q.name + "' announces " + std::to_string(count.value) +
+                                " values, which the file cannot hold (it ends after " + std::to_string(k) + ")");
+          if(!ascii_value(body, q.type)) return false;
+        }
+      }
+    return true;
+  }
+
+  bool walk_binary(Ply_body& body, const Ply_element& e, bool big_endian) const
+  {
+    std::uintmax_t fixed = 0; // the bytes of an item without lists
+    bool lists = false;
+    for(const Ply_property& q : e.properties)
+    {
+      fixed += static_cast<std::uintmax_t>(q.type.bytes);
+      lists = lists || q.list;
+    }
+    if(!lists)
+    {
+      if(e.count > body.left() / fixed) return false; // (CGAL's reader fails there)
+      body.skip(fixed * e.count);
+      return true;
+    }
+    for(std::size_t j = 0; j < e.count; ++j)
+      for(const Ply_property& q : e.properties)
+      {
+        if(!q.list)
+        {
+          if(body.left() < static_cast<std::uintmax_t>(q.type.bytes)) return false;
+          body.skip(static_cast<std::uintmax_t>(q.type.bytes));
+          continue;
+        }
+        const int n = q.count.bytes;
+        if(!body.ensure(static_cast<std::size_t>(n)))
+          refuse_list(e, j, "the file ends before the count of list '" + q.name + "'");
+        const unsigned char* b = reinterpret_cast<const unsigned char*>(body.data());
+        std::uint32_t bits = 0;
+        for(int k = 0; k < n; ++k)
+          bits |= std::uint32_t(b[big_endian ? n - 1 - k : k]) << (8 * k);
+        const std::uint32_t sign = std::uint32_t(1) << (8 * n - 1);
+        const long long count = static_cast<long long>(bits) -
+                                (q.count.is_signed && (bits & sign) ? 2 * static_cast<long long>(sign) : 0);
+        body.skip(static_cast<std::uintmax_t>(n));
+        check_list_count(e, j, q, count, body.left(), false);
+        body.skip(static_cast<std::uintmax_t>(count) * static_cast<std::uintmax_t>(q.type.bytes));
+      }
+    return true;
   }
 
   const std::string& filename_;
@@ -605,7 +1230,8 @@ void read_polygon_soup_or_throw(const std::string& filename, std::vector<Point>&
 {
   const Mesh_file_format format = mesh_file_format(filename);
   check_file_can_be_opened(filename);
-  Header_counts(filename).check(format);
+  const Header_counts counts(filename);
+  counts.check(format);
 
   std::vector<Point> strict_points;
   std::vector<std::vector<std::size_t>> strict_polygons;
@@ -616,11 +1242,26 @@ void read_polygon_soup_or_throw(const std::string& filename, std::vector<Point>&
   polygons.clear();
   if(format == Mesh_file_format::PLY && ply::needs_own_reader(filename))
   {
-    ply::read(filename, points, polygons); // triangle strips, or 8- and 16-bit indices
+    try
+    {
+      ply::read(filename, points, polygons); // triangle strips, or 8- and 16-bit indices
+    }
+    catch(const std::length_error&)
+    {
+      // (CGAL's list reader, which it calls, sizes a list from the file: a
+      // count the walk of Header_counts let through)
+      file_error(filename, "malformed or truncated PLY content: a list size the reader cannot allocate");
+    }
+    catch(const std::bad_alloc&)
+    {
+      file_error(filename, "malformed or truncated PLY content: a list size the reader cannot allocate");
+    }
     return;
   }
   if(format == Mesh_file_format::OFF && read_plain_OFF(filename, points, polygons))
     return;
+  if(format == Mesh_file_format::OFF)
+    counts.check_OFF_faces();
   // verbose(false): some of CGAL's readers print to std::cerr by default; we
   // report through the exception only.
   bool read = false;
@@ -803,6 +1444,9 @@ namespace IO {
 ///
 /// Beyond \cgal's readers, the function
 /// - checks the extension and that the file can be opened before reading;
+/// - refuses, before anything is allocated, a header, an OFF face or a PLY
+///   list that announces more elements than the rest of the file can hold
+///   (\cgal's readers allocate what the file announces);
 /// - re-reads an ASCII OFF file that \cgal rejected to name the line at fault
 ///   (a non-numeric token, a missing value, a truncation: the header announces
 ///   more vertices or faces than the file holds), and reports a NaN, infinite

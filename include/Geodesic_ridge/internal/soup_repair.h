@@ -13,20 +13,28 @@
 #include <Geodesic_ridge/mesh_validation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Projection_traits_3.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -163,11 +171,88 @@ inline bool is_planar(const std::vector<Epick::Point_3>& points, const std::vect
 // What `triangulate()` did.
 struct Triangulation
 {
-  std::size_t polygons = 0;           // polygons with more than three corners
-  std::size_t non_planar = 0;         // of which not planar
-  std::size_t triangles = 0;          // the triangles made from them
-  std::vector<std::size_t> failed;    // soup indices of the polygons CGAL could not triangulate
+  std::size_t polygons = 0;             // polygons with more than three corners
+  std::size_t non_planar = 0;           // of which not planar
+  std::size_t triangles = 0;            // the triangles made from them
+  std::vector<std::size_t> failed;      // soup indices of the polygons left untriangulated, in order
+  std::vector<std::string> why_failed;  // for each of them, why
 };
+
+// Whether the outline of corners `c`, projected along `normal` into the
+// plane of CGAL's `Projection_traits_3` (the one its triangulation uses), is
+// simple: no two corners at one point, no edge touching or crossing another
+// but at their common corner. Computed in kernel K: with intervals, which
+// throw `Uncertain_conversion_exception` where they cannot decide, or exactly.
+template <class K>
+bool is_simple_along(const std::vector<Epick::Point_3>& c, const Epick::Vector_3& normal)
+{
+  using FT = typename K::FT;
+  const FT nx(normal.x()), ny(normal.y()), nz(normal.z());
+  // the plane's base as CGAL's traits make it, b2 = normal x b1 exactly:
+  // b1 x b2 is then a positive multiple of the normal
+  const bool z = CGAL::abs(normal.z()) >= CGAL::abs(normal.y());
+  const std::array<FT, 3> b1 = z ? std::array<FT, 3>{{nz, FT(0), -nx}} : std::array<FT, 3>{{ny, -nx, FT(0)}};
+  const std::array<FT, 3> b2 = {{ny * b1[2] - nz * b1[1], nz * b1[0] - nx * b1[2], nx * b1[1] - ny * b1[0]}};
+  std::vector<typename K::Point_2> projected;
+  projected.reserve(c.size());
+  for(const Epick::Point_3& p : c)
+  {
+    const FT x(p.x()), y(p.y()), w(p.z());
+    projected.emplace_back(x * b1[0] + y * b1[1] + w * b1[2], x * b2[0] + y * b2[1] + w * b2[2]);
+  }
+  return CGAL::is_simple_2(projected.begin(), projected.end(), K());
+}
+
+// Why CGAL's `triangulate_face()` cannot be given the polygon of corners `c`
+// (positions in order; `vertex` names them, as file vertices, in the message)
+// whose normal, computed as CGAL does, is `normal`; empty if it can. A quad
+// is split along a diagonal, which needs only a normal. A larger polygon is
+// projected along its normal into a constrained Delaunay triangulation, which
+// fails assertions, loops forever or (in a Release build) reads out of bounds
+// if two corners coincide or the outline touches or crosses itself there.
+// That is decided exactly; and as the triangulation's own rounded predicates
+// see it, so that they do not contradict the decision.
+inline std::string why_not_triangulable(const std::vector<Epick::Point_3>& c, const Epick::Vector_3& normal,
+                                        const std::vector<std::size_t>& vertex)
+{
+  const std::size_t n = c.size();
+  std::size_t b = 1;
+  while(b < n && c[b] == c[0])
+    ++b;
+  std::size_t k = b + 1;
+  while(k < n && CGAL::collinear(c[0], c[b], c[k]))
+    ++k;
+  if(k >= n)
+    return "its vertices are collinear";
+  if(normal == CGAL::NULL_VECTOR)
+    return "its normal is null (its outline encloses no area)";
+  if(n == 4)
+    return std::string();
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return c[i] < c[j]; });
+  for(std::size_t i = 1; i < n; ++i)
+    if(c[order[i - 1]] == c[order[i]])
+    {
+      const std::size_t u = (std::min)(vertex[order[i - 1]], vertex[order[i]]);
+      const std::size_t v = (std::max)(vertex[order[i - 1]], vertex[order[i]]);
+      return u == v ? "it goes twice through vertex " + std::to_string(u)
+                    : "its vertices " + std::to_string(u) + " and " + std::to_string(v) + " are at the same position";
+    }
+  bool simple;
+  try
+  {
+    CGAL::Protect_FPU_rounding<true> rounding; // the intervals' rounding, for all their operations at once
+    simple = is_simple_along<CGAL::Simple_cartesian<CGAL::Interval_nt_advanced>>(c, normal);
+  }
+  catch(const CGAL::Uncertain_conversion_exception&)
+  {
+    simple = is_simple_along<CGAL::Simple_cartesian<CGAL::Exact_rational>>(c, normal);
+  }
+  if(!simple || !CGAL::is_simple_2(c.begin(), c.end(), CGAL::Projection_traits_3<Epick>(normal)))
+    return "its outline touches or crosses itself";
+  return std::string();
+}
 
 // The polygons with more than three corners, each as a face of its own (own
 // vertices) of a helper mesh; "v:corner" is (polygon, corner) of a vertex.
@@ -197,11 +282,10 @@ polygons_as_separate_faces(const std::vector<Epick::Point_3>& points, const std:
 // Every polygon with more than three corners is split into triangles by
 // CGAL's `triangulate_face()`: a quad along the diagonal that maximizes the
 // dot product of the two triangles' normals, a larger polygon by a
-// constrained Delaunay triangulation in the plane of its normal (or, if that
-// fails, by CGAL's hole filling). The first triangle of polygon j takes its
-// place; the others are appended, polygon after polygon. A polygon CGAL
-// cannot triangulate (its normal is null: its corners are collinear) stays
-// as it is and is listed in `failed`.
+// constrained Delaunay triangulation in the plane of its normal. The first
+// triangle of polygon j takes its place; the others are appended, polygon
+// after polygon. A polygon CGAL cannot triangulate (`why_not_triangulable()`,
+// or CGAL gives up) stays as it is and is listed in `failed`.
 template <class Point_3>
 Triangulation triangulate(const std::vector<Point_3>& file_points, Soup& soup)
 {
@@ -212,9 +296,24 @@ Triangulation triangulate(const std::vector<Point_3>& file_points, Soup& soup)
   Mesh mesh = polygons_as_separate_faces(points, soup.polygons, faces);
   if(faces.empty())
     return result;
-  for(Mesh::Face_index f : faces)
-    PMP::triangulate_face(f, mesh);
   const auto corner = mesh.property_map<Mesh::Vertex_index, std::pair<std::size_t, std::size_t>>("v:corner").first;
+  std::vector<std::string> why(soup.polygons.size());
+  std::vector<Epick::Point_3> corners;
+  std::vector<std::size_t> vertex;
+  for(Mesh::Face_index f : faces)
+  {
+    const std::size_t j = corner[mesh.target(mesh.halfedge(f))].first;
+    corners.clear();
+    vertex.clear();
+    for(std::size_t i : soup.polygons[j])
+    {
+      corners.push_back(points[i]);
+      vertex.push_back(soup.point_file[i]);
+    }
+    why[j] = why_not_triangulable(corners, PMP::compute_face_normal(f, mesh), vertex);
+    if(why[j].empty())
+      PMP::triangulate_face(f, mesh);
+  }
   std::vector<std::vector<std::array<std::size_t, 3>>> triangles(soup.polygons.size());
   for(Mesh::Face_index f : mesh.faces())
   {
@@ -252,6 +351,8 @@ Triangulation triangulate(const std::vector<Point_3>& file_points, Soup& soup)
     }
   }
   std::sort(result.failed.begin(), result.failed.end());
+  for(std::size_t j : result.failed)
+    result.why_failed.push_back(why[j].empty() ? "CGAL's triangulate_face() fails on it" : why[j]);
   return result;
 }
 
@@ -413,7 +514,9 @@ std::size_t file_face_of_centroid(const CGAL::Surface_mesh<Epick::Point_3>& mesh
 // `remove_degenerate_faces()` on a mesh of the (oriented, manifold) soup; it
 // collapses, flips and re-triangulates around them. Faces it made or changed
 // get their file face from `file_face_of_centroid()`. Returns the number of
-// degenerate faces removed.
+// degenerate faces removed. CGAL asserts that the mesh is valid: a soup that
+// does not make one (a point of no polygon: remove them first) is left as it
+// is, its degenerate faces to the validation.
 template <class Point_3>
 std::size_t remove_degenerate_faces(const std::vector<Point_3>& file_points,
                                     const std::vector<std::vector<std::size_t>>& file_polygons, Soup& soup)
@@ -423,17 +526,32 @@ std::size_t remove_degenerate_faces(const std::vector<Point_3>& file_points,
   if(degenerate == 0 || !PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
     return 0;
   Mesh mesh = soup_as_mesh(file_points, soup);
+  if(!CGAL::is_valid_polygon_mesh(mesh) || !CGAL::is_triangle_mesh(mesh))
+    return 0;
+  const auto vfile = mesh.property_map<Mesh::Vertex_index, std::size_t>("v:file").first;
+  const auto ffile = mesh.property_map<Mesh::Face_index, std::size_t>("f:file").first;
+  // a vertex CGAL adds (splitting an edge, or at the centre of a patch it
+  // re-triangulates) is at the position of a vertex: its file vertex is that one's
+  std::map<Epick::Point_3, std::size_t> file_vertex_at;
+  for(Mesh::Vertex_index v : mesh.vertices())
+    file_vertex_at.emplace(mesh.point(v), vfile[v]);
   mesh.set_recycle_garbage(false); // a face CGAL adds has no file face yet
   PMP::remove_degenerate_faces(mesh);
   mesh.collect_garbage();
+  for(Mesh::Vertex_index v : mesh.vertices())
+    if(vfile[v] == no_index)
+    {
+      const auto at = file_vertex_at.find(mesh.point(v));
+      if(at == file_vertex_at.end())
+        return 0; // (a new position: the soup is left as it was)
+      vfile[v] = at->second;
+    }
 
   std::vector<std::vector<std::size_t>> triangles_at_file_vertex(file_points.size());
   for(std::size_t t = 0; t < soup.polygons.size(); ++t)
     for(std::size_t i : soup.polygons[t])
       triangles_at_file_vertex[soup.point_file[i]].push_back(t);
   const Soup before = soup;
-  const auto vfile = mesh.property_map<Mesh::Vertex_index, std::size_t>("v:file").first;
-  const auto ffile = mesh.property_map<Mesh::Face_index, std::size_t>("f:file").first;
   soup.point_file.clear();
   for(Mesh::Vertex_index v : mesh.vertices())
     soup.point_file.push_back(vfile[v]);
