@@ -6,7 +6,7 @@
 //   geodesic_ridge MESH (--source-vertex V | --source-point FACE X Y Z) [--repair]
 //                  [--tolerance T] [--solver exact|vtp|fmm|heat|heat-idt|dijkstra] [--ridge OUT.polylines.txt]
 //                  [--ridge-locations OUT.txt] [--rough-cut OUT.polylines.txt]
-//                  [--refined OUT.ply [--ply-ascii]]
+//                  [--refined OUT.ply [--ply-binary]]
 //                  [--isolines N OUT | --isoline-values a,b,c OUT] [--isolines-from-vertices]
 //                  [--query IN.txt [--query-barycentric] --query-out OUT.txt] [--field linear|cone]
 //                  [--linear-ridge] [--no-corner-fallback]
@@ -34,6 +34,7 @@
 // Besides the package it needs Boost.Program_options, nlohmann-json and libpng.
 #include "cli/input_lines.h"
 #include "cli/options.h"
+#include "cli/statistics_json.h"
 
 #include <Geodesic_ridge/IO/png.h>
 #include <Geodesic_ridge/IO/polylines.h>
@@ -144,73 +145,18 @@ void write_isolines(const std::string& filename, const Lines& lines)
   write_polylines(filename, polylines);
 }
 
-// The statistics as JSON objects, one key per member, named as the member (the
-// reference manual documents each), through nlohmann-json's field macros.
-#define GEODESIC_RIDGE_JSON_FIELDS(Type, ...)                                                           \
-  inline void to_json(Json& nlohmann_json_j, const Type& nlohmann_json_t)                               \
-  {                                                                                                     \
-    NLOHMANN_JSON_EXPAND(NLOHMANN_JSON_PASTE(NLOHMANN_JSON_TO, __VA_ARGS__))                            \
-  }
-} // namespace
-
-// (found by argument-dependent lookup: in the statistics' namespace)
-namespace Geodesic_ridge {
-GEODESIC_RIDGE_JSON_FIELDS(Rough_cut_locus_statistics, genus, number_of_boundary_loops, number_of_vertices, number_of_edges, number_of_faces,
-                           number_of_dual_edges, number_of_core_dual_edges, number_of_kept_dual_edges,
-                           number_of_kept_dual_leaves, number_of_extended_dual_leaves, number_of_leaf_extension_edges,
-                           number_of_cut_edges, number_of_cut_vertices, number_of_cut_leaves, cut_cycle_rank,
-                           number_of_closing_rungs, number_of_teeth_pruned, number_of_curvature_pruned_dual_edges,
-                           number_of_corner_moves, fallback_single_rung)
-GEODESIC_RIDGE_JSON_FIELDS(Extended_surface_statistics, rings, number_of_faces, number_of_vertices, faces_per_ring,
-                           number_of_closures, winding_bound_hits, refused_faces, refused_gluings, open_fans,
-                           number_of_leaf_vertices)
-GEODESIC_RIDGE_JSON_FIELDS(Ridge_curve_statistics, ridge_segments, junctions, free_ends, components, cycles,
-                           total_length, faces_with_several_copies, surviving_copies, split_copies, recombined_copies,
-                           envelope_segments,
-                           edge_segments, thin_face_pieces, regions_before_merge, merged_segments, rejoined_segments,
-                           border_joining_segments,
-                           dropped_components, piece_joining_segments,
-                           pruned_spur_segments, pruned_flat_end_segments, coincident_points)
-GEODESIC_RIDGE_JSON_FIELDS(Cone_ridge_statistics, tolerance, points_moved, junctions_moved, points_kept, points_added,
-                           kept_linear_ridge,
-                           largest_move)
-GEODESIC_RIDGE_JSON_FIELDS(Geodesic_ridge_statistics, solver, tolerance, tree_from_solver, solves, predicted_passes,
-                           outer_copies_winning, ring_cap_hit, margin_rings, rough_cut_locus, extended_surface, ridge,
-                           cone_ridge_traced, cone_ridge)
-GEODESIC_RIDGE_JSON_FIELDS(Refined_mesh_statistics, vertices, faces, split_faces, centre_vertices, ridge_edges,
-                           unmatched_ridge_segments, largest_disagreement)
-GEODESIC_RIDGE_JSON_FIELDS(Repair_statistics, triangulated_polygons, non_planar_polygons, triangles_from_polygons,
-                           repaired, merged_vertices, removed_invalid_faces, removed_duplicate_faces,
-                           split_non_manifold_edges, split_non_manifold_vertices, added_vertex_copies,
-                           removed_degenerate_faces, reoriented_faces, removed_isolated_vertices)
-} // namespace Geodesic_ridge
-
-namespace {
-
 void write_json(const std::string& filename, const Json& j)
 {
   // a file name that is not UTF-8 gets U+FFFD rather than an exception
   write_file(filename, [&](std::ostream& os) { os << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n'; });
 }
 
-// every step the pipeline timed, stage 1's split into its own steps
-Json timings_of(const Ridge& rc, double read_seconds)
-{
-  Json timings = {{"read_and_validate", read_seconds}};
-  for(const auto& [step, seconds] : rc.timings.steps()) timings[step] = seconds;
-  for(const auto& [step, seconds] : rc.rough_cut_locus.timings.steps()) timings["rough_cut_locus." + step] = seconds;
-  timings["total"] = read_seconds + rc.timings.total();
-  return timings;
-}
-
 void write_stats(const std::string& filename, const Options& o, const Ridge& rc, const Mesh& mesh,
                  const File_map& map, const Component_map* cc, double read_seconds,
                  const Geodesic_ridge::Refined_mesh_statistics* refined)
 {
-  const auto& r = rc.rough_cut_locus;
-  const auto& s = r.statistics;
   // the source in the file's terms: the file face and one coordinate per vertex of it
-  const auto file_source = map.file_location(r.source.location, mesh);
+  const auto file_source = map.file_location(rc.rough_cut_locus.source.location, mesh);
   const Json source = o.source_vertex ? Json{{"vertex", *o.source_vertex}}
                                       : Json{{"face", file_source.face}, {"barycentric", file_source.coordinates}};
   Json j = {{"parameters", {{"mesh", o.mesh}, {"source", source}, {"tolerance", o.tolerance}, {"solver", o.solver},
@@ -222,13 +168,10 @@ void write_stats(const std::string& filename, const Options& o, const Ridge& rc,
                        {"connected_components", cc ? cc->number_of_components() : 1},
                        {"other_components_vertices", cc ? cc->number_of_other_vertices() : 0},
                        {"other_components_faces", cc ? cc->number_of_other_faces() : 0},
-                       {"triangulation_and_repair", map.statistics()}}},
-            {"mesh", {{"vertices", s.number_of_vertices}, {"edges", s.number_of_edges},
-                      {"faces", s.number_of_faces}, {"genus", s.genus}, {"total_area", r.total_area}}},
-            {"ridge", {{"polylines", rc.polylines.size()}, {"cone_polylines", rc.cone_polylines.size()}}},
-            {"statistics", rc.statistics}};
+                       {"triangulation_and_repair", map.statistics()}}}};
+  j.update(ridge_json(rc));
   if(refined) j["refined_mesh"] = *refined;
-  j["timings_seconds"] = timings_of(rc, read_seconds);
+  j["timings_seconds"] = timings_json(rc, read_seconds);
   write_json(filename, j);
 }
 
@@ -576,7 +519,7 @@ int run(const Options& o)
     refined_stats = refine(mesh, map, ridge, refined, refined_distance);
     if(cc) append_other_components(file_mesh, file_map, *cc, refined, refined_distance);
   }
-  if(!o.refined.empty()) write_refined(o.refined, refined, o.ply_ascii);
+  if(!o.refined.empty()) write_refined(o.refined, refined, !o.ply_binary);
   if(!o.ridge_locations.empty()) write_ridge_locations(o.ridge_locations, reported, mesh, map);
   if(!o.query.empty() && o.field == Geodesic_ridge::Field::cone)
     write_distances(o.query_out, Geodesic_ridge::make_distance_field(mesh, ridge, p::field(o.field)), queries);
@@ -636,7 +579,7 @@ public:
               {"ridge", {{"polylines", rc.polylines.size()}, {"cone_polylines", rc.cone_polylines.size()}}},
               {"statistics", rc.statistics}};
     j["parameters"].update(batch_parameters(o_));
-    j["timings_seconds"] = timings_of(rc, 0);
+    j["timings_seconds"] = timings_json(rc, 0);
     const std::string polylines = name(k, ".polylines.txt"), json = name(k, ".json");
     write_polylines(path(polylines), points_of(rc.ridge_polylines()));
     write_json(path(json), j);

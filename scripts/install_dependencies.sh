@@ -5,7 +5,10 @@
 #   --doc   also the packages that build the manual (scripts/build_manual.sh)
 set -euo pipefail
 packages=(g++ make cmake libcgal-dev libboost-graph-dev libgmp-dev libmpfr-dev catch2 libeigen3-dev ccache
-          libboost-program-options-dev nlohmann-json3-dev libpng-dev libtbb-dev)
+          libboost-program-options-dev nlohmann-json3-dev libpng-dev libtbb-dev
+          # the Python module (python/): for Debian's own python3
+          python3-dev pybind11-dev python3-numpy python3-pytest python3-setuptools python3-wheel python3-venv
+          python3-dask python3-distributed python3-meshio python3-matplotlib)
 if [ "${1:-}" = "--doc" ]; then packages+=(doxygen graphviz); fi
 missing=()
 for p in "${packages[@]}"; do

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Builds and runs the whole test suite (Catch2 unit tests + command-line tests).
+# Builds and runs the whole test suite (Catch2 unit tests, command-line tests,
+# the Python module's tests).
 #   bash scripts/test.sh              optimised build in build/
 #   bash scripts/test.sh --sanitize   AddressSanitizer + UBSan build in build-asan/
 set -euo pipefail
@@ -21,7 +22,8 @@ if [ "${1:-}" = "--sanitize" ]; then
 else
   dir=build
   skip=()
-  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  # with the Python module and its tests (python/, for Debian's /usr/bin/python3)
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DGEODESIC_RIDGE_PYTHON=ON >/dev/null
 fi
 cmake --build "$dir" -j2
 cd "$dir"

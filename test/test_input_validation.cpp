@@ -975,6 +975,19 @@ TEST_CASE("file errors: a PLY list longer than the rest of the file is refused b
      "element 'face' item 3: the file ends before the count of list 'vertex_indices'"},
     // (CGAL's reader takes the body as part of the header, and reads the
     // items from the failed stream)
+    // (CGAL's reader takes the second line for the format line, whatever it
+    // says, and adds the property to an element it does not have)
+    {"an element on the format line", "ply\nelement ascii 1.0\nproperty list uchar int vertex_indices\n"
+                                      "element vertex 0\nend_header\n",
+     "PLY header: a property before any element (line 3)"},
+    // (CGAL's point reader asserts on it, and without assertions dereferences null)
+    {"a vertex coordinate that is a list", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                                           "property float y\nproperty list uchar float z\nend_header\n",
+     "PLY header: vertex coordinate 'z' is a list, not float or double (line 6)"},
+    // (CGAL's reader adds a point for each vertex item, of no property it knows)
+    {"a huge count of items of no property", "ply\nformat ascii 1.0\nelement vertex 3000000000\n"
+                                             "property int64 w\nend_header\n",
+     "the header announces 3000000000 'vertex', more items than the file has bytes (75)"},
     {"no end_header", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nelement tristrips 1\n"
                       "property list int int vertex_indices\n3 0 1 2\n",
      "malformed or truncated PLY header: no 'end_header' line"},
@@ -1165,6 +1178,8 @@ TEST_CASE("file errors: an OFF face or vertex count larger than the file is refu
     // counts that the plain parse of the header does not read
     {"counts over several lines", "OFF\n2000000000\n4 0\n" + verts + "3 0 2 1\n" + tail,
      "the header announces 2000000000 vertices and 4 faces, which take at least"},
+    {"nOFF, a huge vertex count (found by fuzz/)", "nOFF\n3\n400000000 4 0\n" + verts,
+     "the header announces 400000000 vertices and 4 faces, which take at least"},
     {"binary, a huge vertex count", binary_off(2000000000, 4, faces),
      "the header announces 2000000000 vertices and 4 faces, which take at least"},
     {"binary, a huge face size", binary_off(4, 4, {{2000000000, 0, 2, 1}, {3, 0, 1, 3}, {3, 0, 3, 2}, {3, 1, 2, 3}}),
@@ -1190,6 +1205,7 @@ TEST_CASE("file errors: an OFF face or vertex count larger than the file is refu
         tail,
       "OFF\n4\n4\n0\n" + verts + "3 0 2 1\n" + tail,
       "4OFF\n4 4 0\n0 0 0 1\n2 0 0 2\n0 1 0 1\n0 0 -3 -3\n3 0 2 1\n" + tail,
+      "nOFF\n3\n4 4 0\n" + verts + "3 0 2 1\n" + tail,
       binary_off(4, 4, faces),
     };
     for(const std::string& content : good)

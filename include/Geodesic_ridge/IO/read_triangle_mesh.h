@@ -653,6 +653,7 @@ private:
     Token_lines lines(filename_);
     std::vector<std::string> t;
     if(!lines.next(t) || t[0].size() < 3 || t[0].compare(t[0].size() - 3, 3, "OFF") != 0) return;
+    if(t[0].size() > 3 && t[0][t[0].size() - 4] == 'n') return; // (nOFF: the dimension comes first)
     if(t.size() > 1) t.erase(t.begin());
     else if(!lines.next(t)) return;
     long long nv = 0, nf = 0;
@@ -669,11 +670,12 @@ private:
   }
 
   // The header as CGAL's OFF reader reads it (File_header_OFF, its parser);
-  // false if that fails, or for SKEL and nOFF. `start` is where it stops.
+  // false if that fails. `start` is where it stops. (That reader reads the
+  // items of SKEL and nOFF files as those of OFF.)
   bool read_OFF_header(std::ifstream& in, CGAL::File_header_OFF& header, std::uintmax_t& start) const
   {
     in >> header;
-    if(!in || header.skel() || header.n_dimensional()) return false;
+    if(!in) return false;
     const std::streamoff position = in.tellg(); // (-1 at the end of the file)
     start = position < 0 ? size_ : static_cast<std::uintmax_t>(position);
     return true;
@@ -919,18 +921,23 @@ private:
       std::string keyword;
       words >> keyword;
       if(lines == 0)
-        ply = keyword == "ply";
-      else if(lines == 1)
       {
-        // CGAL's reader takes the format from the second line, whatever its first word
+        ply = keyword == "ply";
+        continue;
+      }
+      if(lines == 1)
+      {
+        // CGAL's reader takes the format from the second line, whatever its
+        // first word (an "element" there is none; found by fuzz/)
         std::string f, version;
         readable = static_cast<bool>(words >> f >> version);
         format = f == "ascii" ? 0 : f == "binary_little_endian" ? 1 : f == "binary_big_endian" ? 2 : -1;
         binary = f != "ascii";
+        continue;
       }
-      else if(keyword.empty())
+      if(keyword.empty())
         readable = false; // (CGAL's reader fails on an empty header line)
-      if(keyword == "element")
+      else if(keyword == "element")
       {
         Ply_element e;
         if(!(words >> e.name >> e.count)) return; // (CGAL's reader says what is wrong)
@@ -949,6 +956,10 @@ private:
         {
           std::string item;
           words >> item >> p.name;
+          if(ply::is_vertex_element(elements.back().name) && (p.name == "x" || p.name == "y" || p.name == "z"))
+            // (as below: CGAL's point reader asserts on it; found by fuzz/)
+            file_error(filename_, "PLY header: vertex coordinate '" + p.name +
+                                    "' is a list, not float or double (line " + std::to_string(lines + 1) + ")");
           p.list = true;
           p.count = ply_type(name);
           p.type = ply_type(item);
@@ -998,10 +1009,13 @@ private:
       // items of no property CGAL's reader knows take none of the bytes it
       // reads, but it loops over them (and adds a point for each vertex item):
       // more of them than the file has bytes is refused too
-      absurd = absurd || (e.least == 0 && e.count > size_ - body);
+      absurd = absurd || (e.least == 0 && e.count > size_);
     }
+    if(absurd)
+      file_error(filename_, "the header announces " + announced + ", more items than the file has bytes (" +
+                              std::to_string(size_) + "): refused before reading");
     // (in ASCII the last value needs no separator after it)
-    if(absurd || least > static_cast<long double>(size_ - body) + (binary ? 0 : 1))
+    if(least > static_cast<long double>(size_ - body) + (binary ? 0 : 1))
       refuse(announced, static_cast<std::uintmax_t>((std::min)(least + header, 1.8e19L)));
     if(ply && readable && format >= 0)
       check_PLY_lists(elements, format, body);
