@@ -200,7 +200,11 @@ def test_many_sources_match_one_at_a_time():
 
 def test_errors_are_typed_exceptions():
     V, F = eight()
+    # the octahedron with a third face on its edge 0-2
+    Vn = np.vstack([octahedron()[0], [[2.0, 2.0, 2.0]]])
+    Fn = np.vstack([octahedron()[1], [[2, 0, 6]]])
     cases = [
+        (lambda: gr.RidgeSolver(Vn, Fn), gr.InvalidMeshError, "edge 0-2 is non-manifold"),
         (lambda: gr.RidgeSolver(V[:, :2], F), gr.InvalidMeshError, "shape"),
         (lambda: gr.RidgeSolver(V, F.astype(np.float64)), gr.InvalidMeshError, "integers"),
         (lambda: gr.RidgeSolver(V, F + len(V)), gr.InvalidMeshError, "out of range"),
