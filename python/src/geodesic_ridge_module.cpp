@@ -415,6 +415,7 @@ struct Ridge
 {
   std::shared_ptr<const Mesh_data> mesh;
   std::shared_ptr<const Ridge_curve> curve;
+  Options options; // the parameters it was computed with
 
   py::list polylines() const { return polylines_of(curve->ridge_polylines()); }
   py::list linear_polylines() const { return polylines_of(curve->polylines); }
@@ -466,7 +467,18 @@ struct Ridge
   py::array_t<double> vertex_distances() const { return array_of(curve->vertex_distances); }
   py::object statistics() const
   {
-    nlohmann::ordered_json j = geodesic_ridge_cli::ridge_json(*curve);
+    const Options& o = options;
+    nlohmann::ordered_json j = {
+        {"parameters",
+         {{"solver", o.solver}, {"tolerance", o.tolerance}, {"field", o.field == GR::Field::cone ? "cone" : "linear"},
+          {"cone_ridge", curve->statistics.cone_ridge_traced}, {"leaf_curvature", o.leaf_curvature},
+          {"branch_curvature", o.branch_curvature}, {"initial_rings", o.initial_rings},
+          {"extension_step", o.extension_step}, {"maximum_rings", o.maximum_rings},
+          {"maximum_solves", o.maximum_solves}, {"tree_from_solver", o.tree_from_solver},
+          {"predicted_extension", o.predicted_extension}, {"fast_marching_margin", o.fast_marching_margin},
+          {"minimum_spur_angle", o.minimum_spur_angle}, {"kink_angle", o.kink_angle},
+          {"corner_fallback", o.corner_fallback}, {"cone_ridge_tolerance", o.cone_ridge_tolerance}}}};
+    j.update(geodesic_ridge_cli::ridge_json(*curve));
     j["timings_seconds"] = geodesic_ridge_cli::timings_json(*curve, 0);
     return json_to_python(j);
   }
@@ -478,6 +490,7 @@ struct Distance_field
   std::shared_ptr<const Mesh_data> mesh;
   std::shared_ptr<const Ridge_curve> curve;
   std::shared_ptr<const Field_type> field;
+  Options options;
 
   py::array_t<double> distance(const py::array& faces_in, const py::array& barycentric_in) const
   {
@@ -534,7 +547,7 @@ public:
     });
   }
 
-  Ridge ridge(const py::handle& source) const { return {mesh_, run(source, options_)}; }
+  Ridge ridge(const py::handle& source) const { return {mesh_, run(source, options_), options_}; }
 
   Distance_field distance_field(const py::handle& source, const std::string& field) const
   {
@@ -543,7 +556,7 @@ public:
     auto curve = run(source, o);
     py::gil_scoped_release release;
     auto f = std::make_shared<const Field_type>(GR::make_distance_field(mesh(), *curve, GR::parameters::field(o.field)));
-    return {mesh_, curve, f};
+    return {mesh_, curve, f, o};
   }
 
   // (V2, F2, distance, original face of each face of the refined mesh)
@@ -644,7 +657,7 @@ public:
 #endif
     }
     std::vector<Ridge> out;
-    for(auto& c : curves) out.push_back({mesh_, c});
+    for(auto& c : curves) out.push_back({mesh_, c, options_});
     return out;
   }
 
@@ -800,7 +813,7 @@ PYBIND11_MODULE(_geodesic_ridge, m)
       })
       .def_property_readonly("maximum_distance", [](const Distance_field& d) { return d.field->maximum_distance(); })
       .def_property_readonly("vertex_distances", [](const Distance_field& d) { return array_of(d.curve->vertex_distances); })
-      .def_property_readonly("ridge", [](const Distance_field& d) { return Ridge{d.mesh, d.curve}; });
+      .def_property_readonly("ridge", [](const Distance_field& d) { return Ridge{d.mesh, d.curve, d.options}; });
 
   py::class_<Ridge_solver>(m, "RidgeSolver",
                            "A mesh validated once and the named parameters; computes ridges, distance fields, "

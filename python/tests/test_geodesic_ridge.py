@@ -254,6 +254,26 @@ def test_read_mesh_with_polygons_maps_back_to_the_file(tmp_path):
     assert np.min(np.linalg.norm(points - V[far], axis=1)) < 1e-9
 
 
+def test_read_mesh_repair(tmp_path):
+    # the octahedron with a vertex no face uses: refused, or removed by the repair
+    V, F = octahedron()
+    V = np.vstack([V[:3], [[5.0, 5.0, 5.0]], V[3:]])
+    F = np.where(F >= 3, F + 1, F)
+    path = tmp_path / "dirty.off"
+    path.write_text("OFF\n%d %d 0\n" % (len(V), len(F)) + "".join("%r %r %r\n" % tuple(p) for p in V)
+                    + "".join("3 %d %d %d\n" % tuple(f) for f in F))
+    with pytest.raises(gr.InvalidMeshError) as info:
+        gr.read_mesh(str(path))
+    assert "repair" in str(info.value)
+    V2, F2, back = gr.read_mesh(str(path), repair=True)
+    assert len(V2) == 6 and len(F2) == 8 and len(back.vertices) == 6 and len(back.faces) == 8
+    assert 3 not in back.vertices and np.allclose(V[back.vertices], V2)
+    ridge = gr.compute_ridge(V2, F2, 0)
+    assert ridge.statistics["statistics"]["ridge"]["cycles"] == 0
+    assert ridge.statistics["parameters"]["solver"] == "exact"
+    assert ridge.statistics["parameters"]["tolerance"] == 0.025
+
+
 # --- the GIL ------------------------------------------------------------------------------------------------
 
 def test_computations_release_the_gil():
