@@ -34,6 +34,18 @@
 namespace Geodesic_ridge {
 
 /// \ingroup PkgGeodesicRidgeRef
+/// Counts of the growth of the extended surface and of the solves on it (part
+/// of `Geodesic_ridge_statistics`).
+struct Extension_growth_statistics
+{
+  int solves = 0;                 ///< solves of the solver on the extended surface
+  int predicted_passes = 0;       ///< fast-marching passes on E that decided the extension steps
+  std::size_t outer_copies_winning = 0; ///< at the last solve: copies still winning on a border edge of E (0: E holds every shortest path)
+  bool ring_cap_hit = false;      ///< the growth stopped at `maximum_rings` with copies still winning
+  int margin_rings = 0;           ///< fast marching: rings grown around the final E (`parameters::fast_marching_margin`)
+};
+
+/// \ingroup PkgGeodesicRidgeRef
 /// Counts of the extension.
 struct Extended_surface_statistics
 {

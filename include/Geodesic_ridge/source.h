@@ -66,17 +66,6 @@ struct Geodesic_source
   std::pair<face_descriptor, std::array<double, 3> > location;
 };
 
-namespace internal {
-
-template <class VPM, class Key>
-double distance_between(const VPM& vpm, const Key& a, const Key& b)
-{
-  return std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, a), get(vpm, b))));
-}
-
-
-} // namespace internal
-
 /// \ingroup PkgGeodesicRidgeRef
 /// Makes a source at vertex `v`.
 /// \param tm the mesh

@@ -6,7 +6,7 @@
 #ifndef GEODESIC_RIDGE_INTERNAL_EDGE_GRAPH_DISTANCES_H
 #define GEODESIC_RIDGE_INTERNAL_EDGE_GRAPH_DISTANCES_H
 
-#include <Geodesic_ridge/source.h>
+#include <Geodesic_ridge/internal/mesh_maps.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -7,14 +7,24 @@
 #define GEODESIC_RIDGE_INTERNAL_MESH_MAPS_H
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/number_utils.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/property_map/property_map.hpp>
 
+#include <cmath>
 #include <type_traits>
 
 namespace Geodesic_ridge {
 namespace internal {
+
+// the length of the segment between the points of `a` and `b` (the sum of
+// squares in the order of CGAL::squared_distance(), without its header)
+template <class VPM, class Key>
+double distance_between(const VPM& vpm, const Key& a, const Key& b)
+{
+  return std::sqrt(CGAL::to_double((get(vpm, a) - get(vpm, b)).squared_length()));
+}
 
 /// The input mesh's point and index maps: the user's `vertex_point_map` and
 /// index maps, or the mesh's own (CGAL initializes index maps a mesh lacks).

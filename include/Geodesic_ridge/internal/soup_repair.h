@@ -10,7 +10,7 @@
 #define GEODESIC_RIDGE_INTERNAL_SOUP_REPAIR_H
 
 #include <Geodesic_ridge/internal/union_find.h>
-#include <Geodesic_ridge/mesh_validation.h>
+#include <Geodesic_ridge/internal/soup_validator.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
