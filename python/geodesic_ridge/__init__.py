@@ -71,9 +71,10 @@ def compute_distance(V, F, source, faces=None, barycentric=None, solver="exact",
                      **named_parameters):
     """Geodesic distances from `source`: at every vertex (n,), or at the surface points `faces` (k,) and
     `barycentric` (k, 3) when given, through the region-wise field (`field` "linear" or "cone")."""
-    distance_field = RidgeSolver(V, F, solver=solver, **named_parameters).distance_field(source, field)
-    if faces is None and barycentric is None:
-        return distance_field.vertex_distances
-    if faces is None or barycentric is None:
+    if (faces is None) != (barycentric is None):
         raise InvalidParameterError("faces and barycentric go together")
+    ridge_solver = RidgeSolver(V, F, solver=solver, field=field, **named_parameters)
+    if faces is None:
+        return ridge_solver.ridge(source).vertex_distances  # (no field needed)
+    distance_field = ridge_solver.distance_field(source, field)
     return distance_field.distance(np.asarray(faces), np.asarray(barycentric, dtype=np.float64))

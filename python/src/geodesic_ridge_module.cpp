@@ -35,9 +35,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -145,10 +147,8 @@ std::shared_ptr<const Mesh_data> mesh_from_arrays(const py::array& V_in, const p
     throw GR::Invalid_mesh_error("V must be an array of shape (n, 3) of numbers");
   if(F_in.ndim() != 2 || F_in.shape(1) != 3)
     throw GR::Invalid_mesh_error("F must be an array of shape (m, 3) of integers (triangles)");
-  if(F_in.size() > 0 && !(py::isinstance<py::array_t<std::int64_t> >(F_in) || py::isinstance<py::array_t<std::int32_t> >(F_in) ||
-                          py::isinstance<py::array_t<std::uint32_t> >(F_in) || py::isinstance<py::array_t<std::int16_t> >(F_in) ||
-                          py::isinstance<py::array_t<std::uint16_t> >(F_in) || py::isinstance<py::array_t<std::uint8_t> >(F_in) ||
-                          py::isinstance<py::array_t<std::int8_t> >(F_in) || py::isinstance<py::array_t<std::uint64_t> >(F_in)))
+  const char kind = F_in.dtype().kind(); // 'i' signed, 'u' unsigned integers
+  if(F_in.size() > 0 && kind != 'i' && kind != 'u')
     throw GR::Invalid_mesh_error("F must hold integers (int32 or int64), not " + std::string(py::str(F_in.dtype())));
   const auto F = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(F_in);
   std::vector<Point_3> points;
@@ -219,10 +219,6 @@ struct Options
 };
 
 const char* const solver_names = "exact, vtp, fmm, heat, heat-idt, dijkstra";
-const char* const parameter_names =
-    "tolerance, leaf_curvature, branch_curvature, initial_rings, extension_step, maximum_rings, maximum_solves, "
-    "tree_from_solver, predicted_extension, fast_marching_margin, minimum_spur_angle, kink_angle, corner_fallback, "
-    "field, cone_ridge, cone_ridge_tolerance";
 
 GR::Field field_of(const py::handle& value)
 {
@@ -261,6 +257,51 @@ T number_of(const std::string& name, const py::handle& value)
   }
 }
 
+// Every named parameter once: how a keyword sets it and how the statistics
+// report it.
+struct Parameter
+{
+  std::string name;
+  std::function<void(Options&, const py::handle&)> set;
+  std::function<nlohmann::ordered_json(const Options&)> get;
+};
+
+template <class T>
+Parameter member(const std::string& name, T Options::*m)
+{
+  return {name, [name, m](Options& o, const py::handle& value) { o.*m = number_of<T>(name, value); },
+          [m](const Options& o) { return nlohmann::ordered_json(o.*m); }};
+}
+
+const std::vector<Parameter>& parameters()
+{
+  static const std::vector<Parameter> all = {
+      member("tolerance", &Options::tolerance),
+      member("leaf_curvature", &Options::leaf_curvature),
+      member("branch_curvature", &Options::branch_curvature),
+      member("initial_rings", &Options::initial_rings),
+      member("extension_step", &Options::extension_step),
+      member("maximum_rings", &Options::maximum_rings),
+      member("maximum_solves", &Options::maximum_solves),
+      member("tree_from_solver", &Options::tree_from_solver),
+      member("predicted_extension", &Options::predicted_extension),
+      member("fast_marching_margin", &Options::fast_marching_margin),
+      member("minimum_spur_angle", &Options::minimum_spur_angle),
+      member("kink_angle", &Options::kink_angle),
+      member("corner_fallback", &Options::corner_fallback),
+      {"field", [](Options& o, const py::handle& value) { o.field = field_of(value); },
+       [](const Options& o) { return nlohmann::ordered_json(o.field == GR::Field::cone ? "cone" : "linear"); }},
+      // None: the package's default (with the cone field or a solver with cones)
+      {"cone_ridge",
+       [](Options& o, const py::handle& value) {
+         if(value.is_none()) o.cone_ridge.reset();
+         else o.cone_ridge = number_of<bool>("cone_ridge", value);
+       },
+       [](const Options& o) { return o.cone_ridge ? nlohmann::ordered_json(*o.cone_ridge) : nlohmann::ordered_json(); }},
+      member("cone_ridge_tolerance", &Options::cone_ridge_tolerance)};
+  return all;
+}
+
 Options options_from(const std::string& solver, const py::dict& kwargs)
 {
   Options o;
@@ -271,25 +312,15 @@ Options options_from(const std::string& solver, const py::dict& kwargs)
   for(const auto& [key, value] : kwargs)
   {
     const std::string k = py::str(key);
-    if(k == "tolerance") o.tolerance = number_of<double>(k, value);
-    else if(k == "leaf_curvature") o.leaf_curvature = number_of<double>(k, value);
-    else if(k == "branch_curvature") o.branch_curvature = number_of<double>(k, value);
-    else if(k == "initial_rings") o.initial_rings = number_of<int>(k, value);
-    else if(k == "extension_step") o.extension_step = number_of<int>(k, value);
-    else if(k == "maximum_rings") o.maximum_rings = number_of<int>(k, value);
-    else if(k == "maximum_solves") o.maximum_solves = number_of<int>(k, value);
-    else if(k == "tree_from_solver") o.tree_from_solver = number_of<bool>(k, value);
-    else if(k == "predicted_extension") o.predicted_extension = number_of<bool>(k, value);
-    else if(k == "fast_marching_margin") o.fast_marching_margin = number_of<int>(k, value);
-    else if(k == "minimum_spur_angle") o.minimum_spur_angle = number_of<double>(k, value);
-    else if(k == "kink_angle") o.kink_angle = number_of<double>(k, value);
-    else if(k == "corner_fallback") o.corner_fallback = number_of<bool>(k, value);
-    else if(k == "field") o.field = field_of(value);
-    else if(k == "cone_ridge") { if(!value.is_none()) o.cone_ridge = number_of<bool>(k, value); }
-    else if(k == "cone_ridge_tolerance") o.cone_ridge_tolerance = number_of<double>(k, value);
-    else
-      throw GR::Invalid_parameter_error("unknown named parameter '" + k + "'; the named parameters are " +
-                                        parameter_names);
+    const auto& all = parameters();
+    const auto p = std::find_if(all.begin(), all.end(), [&](const Parameter& q) { return q.name == k; });
+    if(p == all.end())
+    {
+      std::string names;
+      for(const Parameter& q : all) names += (names.empty() ? "" : ", ") + q.name;
+      throw GR::Invalid_parameter_error("unknown named parameter '" + k + "'; the named parameters are " + names);
+    }
+    p->set(o, value);
   }
   return o;
 }
@@ -404,6 +435,23 @@ py::array_t<double> points_array(const std::vector<Point_3>& points)
   return a;
 }
 
+// The vertices (n, 3) and triangles (m, 3) of a mesh without removed
+// elements, in index order, each face from CGAL's first corner.
+std::pair<py::array_t<double>, py::array_t<std::int64_t> > mesh_arrays(const Mesh& mesh)
+{
+  std::vector<Point_3> points(mesh.points().begin(), mesh.points().end());
+  py::array_t<std::int64_t> F({static_cast<py::ssize_t>(mesh.number_of_faces()), py::ssize_t(3)});
+  auto m = F.mutable_unchecked<2>();
+  py::ssize_t i = 0;
+  for(auto f : mesh.faces())
+  {
+    int k = 0;
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) m(i, k++) = static_cast<std::int64_t>(v.idx());
+    ++i;
+  }
+  return {points_array(points), F};
+}
+
 py::object json_to_python(const nlohmann::ordered_json& j)
 {
   return py::module_::import("json").attr("loads")(j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
@@ -467,17 +515,10 @@ struct Ridge
   py::array_t<double> vertex_distances() const { return array_of(curve->vertex_distances); }
   py::object statistics() const
   {
-    const Options& o = options;
-    nlohmann::ordered_json j = {
-        {"parameters",
-         {{"solver", o.solver}, {"tolerance", o.tolerance}, {"field", o.field == GR::Field::cone ? "cone" : "linear"},
-          {"cone_ridge", curve->statistics.cone_ridge_traced}, {"leaf_curvature", o.leaf_curvature},
-          {"branch_curvature", o.branch_curvature}, {"initial_rings", o.initial_rings},
-          {"extension_step", o.extension_step}, {"maximum_rings", o.maximum_rings},
-          {"maximum_solves", o.maximum_solves}, {"tree_from_solver", o.tree_from_solver},
-          {"predicted_extension", o.predicted_extension}, {"fast_marching_margin", o.fast_marching_margin},
-          {"minimum_spur_angle", o.minimum_spur_angle}, {"kink_angle", o.kink_angle},
-          {"corner_fallback", o.corner_fallback}, {"cone_ridge_tolerance", o.cone_ridge_tolerance}}}};
+    nlohmann::ordered_json parameters = {{"solver", options.solver}};
+    for(const Parameter& p : ::parameters()) parameters[p.name] = p.get(options);
+    parameters["cone_ridge"] = curve->statistics.cone_ridge_traced; // (the default resolved)
+    nlohmann::ordered_json j = {{"parameters", parameters}};
     j.update(geodesic_ridge_cli::ridge_json(*curve));
     j["timings_seconds"] = geodesic_ridge_cli::timings_json(*curve, 0);
     return json_to_python(j);
@@ -713,24 +754,10 @@ private:
   static py::tuple refined_arrays(const Mesh& refined, const std::vector<std::int64_t>& original)
   {
     auto distance = refined.property_map<vertex_descriptor, double>("v:distance").first;
-    std::vector<Point_3> points;
     std::vector<double> d;
-    for(auto v : refined.vertices())
-    {
-      points.push_back(refined.point(v));
-      d.push_back(distance[v]);
-    }
-    py::array_t<std::int64_t> F({static_cast<py::ssize_t>(refined.number_of_faces()), py::ssize_t(3)});
-    auto m = F.mutable_unchecked<2>();
-    py::ssize_t i = 0;
-    for(auto f : refined.faces())
-    {
-      int k = 0;
-      for(auto v : CGAL::vertices_around_face(refined.halfedge(f), refined))
-        m(i, k++) = static_cast<std::int64_t>(static_cast<std::size_t>(v));
-      ++i;
-    }
-    return py::make_tuple(points_array(points), F, array_of(d), array_of(original));
+    for(auto v : refined.vertices()) d.push_back(distance[v]);
+    const auto [V, F] = mesh_arrays(refined);
+    return py::make_tuple(V, F, array_of(d), array_of(original));
   }
 
   Options options_;
@@ -745,17 +772,7 @@ py::tuple read_mesh(const std::string& path, bool repair)
     py::gil_scoped_release release;
     map.emplace(GR::IO::read_triangle_mesh(path, mesh, GR::parameters::repair(repair)));
   }
-  std::vector<Point_3> points;
-  for(auto v : mesh.vertices()) points.push_back(mesh.point(v));
-  py::array_t<std::int64_t> F({static_cast<py::ssize_t>(mesh.number_of_faces()), py::ssize_t(3)});
-  auto m = F.mutable_unchecked<2>();
-  py::ssize_t i = 0;
-  for(auto f : mesh.faces())
-  {
-    int k = 0;
-    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) m(i, k++) = static_cast<std::int64_t>(v.idx());
-    ++i;
-  }
+  const auto [V, F] = mesh_arrays(mesh);
   // the map back to the file's indices, where the numbering changed
   bool same = mesh.number_of_vertices() == map->number_of_file_vertices() &&
               mesh.number_of_faces() == map->number_of_file_faces();
@@ -770,9 +787,9 @@ py::tuple read_mesh(const std::string& path, bool repair)
     file_face.push_back(static_cast<std::int64_t>(map->file_face(f, mesh)));
     same = same && file_face.back() == static_cast<std::int64_t>(f.idx());
   }
-  if(same) return py::make_tuple(points_array(points), F);
+  if(same) return py::make_tuple(V, F);
   py::module_ gr = py::module_::import("geodesic_ridge");
-  return py::make_tuple(points_array(points), F, gr.attr("FileIndexMap")(array_of(file_vertex), array_of(file_face)));
+  return py::make_tuple(V, F, gr.attr("FileIndexMap")(array_of(file_vertex), array_of(file_face)));
 }
 
 } // namespace
