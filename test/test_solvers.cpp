@@ -860,6 +860,68 @@ TEST_CASE("window propagation gives the cones of the exact solver at the samples
   }
 }
 
+TEST_CASE("the exact solver's cones where shortest paths run through vertices along edges", "[solvers][cones]")
+{
+  // Found by the pipeline fuzzer (fuzz/corpus/pipeline/
+  // smsp_first_bend_no_intersection): an octahedron's faces all in z = 0, a
+  // closed surface folded flat whose two layers overlap. From vertex 0 the
+  // paths of some samples of the extended surface run through a vertex and on
+  // along an edge; SMSP's walk past such a crossing failed its assertion
+  // `bool(cgalIntersection)` (and read an empty optional with NDEBUG). The
+  // walk now stops at the vertex and goes on from it.
+  namespace p = Geodesic_ridge::parameters;
+  const std::vector<Point_3> points = {Point_3(1, 0, 0),  Point_3(-1, 0, 0),      Point_3(-2, 1, 0),
+                                       Point_3(0, -1, 0), Point_3(0, 0.84375, 0), Point_3(0.09375, 0, 0)};
+  const std::vector<std::array<std::size_t, 3> > triangles = {{{0, 2, 4}}, {{2, 1, 4}}, {{1, 3, 4}}, {{3, 0, 4}},
+                                                              {{2, 0, 5}}, {{1, 2, 5}}, {{3, 1, 5}}, {{0, 3, 5}}};
+  Mesh m;
+  for(const Point_3& x : points) m.add_vertex(x);
+  for(const auto& t : triangles)
+    REQUIRE(m.add_face(vertex_descriptor(Mesh::size_type(t[0])), vertex_descriptor(Mesh::size_type(t[1])),
+                       vertex_descriptor(Mesh::size_type(t[2]))) != Mesh::null_face());
+  for(const Geodesic_ridge::Field field : {Geodesic_ridge::Field::linear, Geodesic_ridge::Field::cone})
+  {
+    INFO("field " << (field == Geodesic_ridge::Field::cone ? "cone" : "linear"));
+    const auto exact = Geodesic_ridge::compute_ridge_curve(m, vertex_descriptor(0), p::field(field));
+    const auto vtp = Geodesic_ridge::compute_ridge_curve(
+        m, vertex_descriptor(0), p::field(field, p::solver(Geodesic_ridge::Window_propagation_solver())));
+    for(const auto* r : {&exact, &vtp})
+    {
+      CHECK(r->statistics.ridge.components == 1);
+      CHECK(r->statistics.ridge.cycles == 0);
+      CHECK(!r->polylines.empty());
+    }
+  }
+  // on M, every sample's cone (the walks through vertices included) gives
+  // the exact distance there, as window propagation's cones do
+  std::vector<double> d_exact(m.number_of_vertices()), d_vtp(m.number_of_vertices());
+  std::vector<Geodesic_ridge::Face_cone> exact, vtp;
+  auto every = [](std::size_t) { return true; };
+  const auto& samples = Geodesic_ridge::Exact_solver::cone_samples();
+  Geodesic_ridge::Exact_solver()(m, vertex_descriptor(0), CGAL::make_property_map(d_exact), exact, every);
+  Geodesic_ridge::Window_propagation_solver()(m, vertex_descriptor(0), CGAL::make_property_map(d_vtp), vtp, every,
+                                              samples);
+  REQUIRE(exact.size() == vtp.size());
+  double worst = 0;
+  for(auto f : m.faces())
+  {
+    const auto h = m.halfedge(f);
+    const Geodesic_ridge::internal::Face_plane plane(
+        std::array<Point_3, 3>{{m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h)))}});
+    for(std::size_t j = 0; j < samples.size(); ++j)
+    {
+      const auto x = plane.point(samples[j]);
+      const auto& a = exact[samples.size() * std::size_t(f) + j];
+      const auto& b = vtp[samples.size() * std::size_t(f) + j];
+      const double da = std::sqrt(CGAL::squared_distance(x, plane.point(a.apex))) + a.offset;
+      const double db = std::sqrt(CGAL::squared_distance(x, plane.point(b.apex))) + b.offset;
+      worst = std::max(worst, std::abs(da - db) / da);
+    }
+  }
+  INFO("largest relative difference at the samples " << worst);
+  CHECK(worst <= 1e-9);
+}
+
 // ---------------------------------------------------------------------------
 // Invariance (issue 41): every stage computes on the mesh moved and scaled to
 // a unit size (internal/normalization.h), by a power of two, so a mesh scaled

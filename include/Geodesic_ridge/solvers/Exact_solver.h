@@ -216,34 +216,66 @@ private:
   // cannot stop a walk, and the rest of the path (to the source) is not needed
   struct Apex_found {};
 
+  // thrown where the path crosses an edge at one of its ends (within
+  // `through_vertex` of the edge) at a vertex that does not bend it: the walk
+  // goes on from that vertex. SMSP's walk cannot go on by itself: past a
+  // crossing at a vertex its next ray can be parallel to the next edge, and its
+  // assertion `bool(cgalIntersection)` fails (with NDEBUG it dereferences an
+  // empty optional). Found by the pipeline fuzzer (fuzz/corpus/pipeline/
+  // smsp_first_bend_no_intersection: a path along a border of E).
+  template <class Vertex>
+  struct Through_vertex { Vertex v; };
+
+  // an edge crossing this close to an end (a fraction of the edge) passes
+  // through the end: SMSP's crossings there are off by about 1e-16
+  static constexpr double through_vertex = 1e-12;
+
   // A visitor of the path from a sample point that stops at its first bend.
   template <class TriangleMesh, class Solver>
   struct First_bend
   {
     typedef typename Solver::Point_3 Point_3;
     typedef boost::graph_traits<TriangleMesh> GT;
+    typedef typename GT::vertex_descriptor vertex_descriptor;
+    const TriangleMesh& tm;
     Solver& sp;
     const std::vector<char>& bends;
     typename boost::property_map<TriangleMesh, CGAL::vertex_index_t>::const_type vim;
     Point_3 last;              // the previous point of the path
-    bool have_direction;
-    Point_3 towards;           // a point of the first straight piece
-    double length;             // of the path so far
-    double apex_distance;      // the distance at the first bend
+    bool have_direction = false;
+    Point_3 towards = last;    // a point of the first straight piece
+    double length = 0;         // of the path so far
+    double apex_distance = 0;  // the distance at the first bend
+    vertex_descriptor start = GT::null_vertex(); // the vertex a walk goes on from
+
     void step(const Point_3& p)
     {
       length += std::sqrt(CGAL::to_double(CGAL::squared_distance(last, p)));
       last = p;
       if(!have_direction) { towards = p; have_direction = true; }
     }
-    void operator()(typename GT::halfedge_descriptor h, typename Solver::FT t) { step(sp.point(h, t)); }
-    void operator()(typename GT::vertex_descriptor v)
+    // at vertex v: the apex if the path bends there; otherwise on from v
+    // (through_edge_end) or on with SMSP's walk (a pseudo-source node)
+    bool bends_at(vertex_descriptor v)
     {
       step(sp.point(v));
-      const double d = CGAL::to_double(sp.shortest_distance_to_source_points(v).first);
-      if(!bends[get(vim, v)] && d > 0) return; // straight through a flat vertex
-      apex_distance = d;
-      throw Apex_found();
+      apex_distance = CGAL::to_double(sp.shortest_distance_to_source_points(v).first);
+      return bends[get(vim, v)] || apex_distance <= 0;
+    }
+    void operator()(typename GT::halfedge_descriptor h, typename Solver::FT t)
+    {
+      const double s = CGAL::to_double(t); // the weight of the edge's target
+      if(s > through_vertex && s < 1 - through_vertex) { step(sp.point(h, t)); return; }
+      const vertex_descriptor v = s <= through_vertex ? source(h, tm) : target(h, tm);
+      if(v == start) { apex_distance = CGAL::to_double(sp.shortest_distance_to_source_points(v).first); throw Apex_found(); }
+      if(bends_at(v)) throw Apex_found();
+      throw Through_vertex<vertex_descriptor>{v};
+    }
+    void operator()(vertex_descriptor v)
+    {
+      if(v == start) return; // the walk's first call
+      if(bends_at(v)) throw Apex_found();
+      // straight through a flat vertex that SMSP made a pseudo-source
     }
     void operator()(typename GT::face_descriptor f, typename Solver::Barycentric_coordinates b)
     {
@@ -262,9 +294,10 @@ private:
                            const typename Solver::Point_3 (&p)[3], const std::array<double, 3>& sb)
   {
     typedef typename Solver::Point_3 Point_3;
+    typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
     const typename Solver::Barycentric_coordinates at = {{sb[0], sb[1], sb[2]}};
     const Point_3 q = sp.point(f, at);
-    First_bend<TriangleMesh, Solver> bend{sp, bends, get(CGAL::vertex_index, tm), q, false, q, 0, 0};
+    First_bend<TriangleMesh, Solver> bend{tm, sp, bends, get(CGAL::vertex_index, tm), q};
     Face_cone cone;
     cone.apex = sb;
     try
@@ -274,6 +307,22 @@ private:
       return cone;
     }
     catch(const Apex_found&) {}
+    catch(const Through_vertex<vertex_descriptor>& through)
+    {
+      // on from each flat vertex the path runs through; the distance falls
+      // along the path, so this ends (the bound only guards against rounding)
+      bend.start = through.v;
+      for(std::size_t walks = 1; walks <= num_vertices(tm); ++walks)
+      {
+        try
+        {
+          sp.shortest_path_sequence_to_source_points(bend.start, bend);
+          break; // no apex past the vertex: it is the apex (offset set there)
+        }
+        catch(const Apex_found&) { break; }
+        catch(const Through_vertex<vertex_descriptor>& next) { bend.start = next.v; }
+      }
+    }
     const auto w = bend.towards - q;
     const double wl = std::sqrt(CGAL::to_double(w.squared_length()));
     cone.offset = bend.apex_distance;
