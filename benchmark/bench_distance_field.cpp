@@ -3,7 +3,7 @@
 //
 // Question: how exact is the region-wise distance field at surface points,
 // against linear interpolation of exact vertex distances? The paper's Table 1
-// (user manual, "The Distance Field: Table 1 of the Paper, Reproduced"),
+// (manual, companion page "Details, Measurements and History": "The Distance Field: Table 1 of the Paper, Reproduced"),
 // reproduced with both solvers, and the query throughput.
 //
 //   bench_distance_field [--max-faces N] [--sources-per-mesh N] [--points N] [--seed S]
