@@ -10,6 +10,7 @@
 #include <Geodesic_ridge/cone_ridge.h>
 #include <Geodesic_ridge/extended_surface.h>
 #include <Geodesic_ridge/internal/extension_growth.h>
+#include <Geodesic_ridge/internal/tuning.h>
 #include <Geodesic_ridge/lower_envelope.h>
 #include <Geodesic_ridge/parameters.h>
 #include <Geodesic_ridge/ridge_curve.h>
@@ -238,7 +239,7 @@ private:
   // field on every undominated copy.
   void grow_and_solve(Builder& builder)
   {
-    const double kink_filter_share = 0.25;
+    const double kink_filter_share = tuning::extension::kink_filter_share;
     const bool cone_field = options_.field == Field::cone;
     const Growth_schedule schedule{options_.extension_step, options_.maximum_rings, options_.maximum_solves,
                                    options_.predicted, options_.fast_marching_margin};
@@ -360,7 +361,8 @@ private:
     // linear one and keeps its branches (bunny_7k v1951 and f6223, bunny_1k
     // v80 at tolerance 0.002: recall p95 2.52, 2.34 and 0.61 mean edges
     // without the split, 0.23, 0.21 and 0.10 with it).
-    const double witness_tolerance = 0.1 * mean_edge_, recombined_split_angle = 30;
+    const double witness_tolerance = tuning::ridge::recombined_witness_tolerance * mean_edge_,
+                 recombined_split_angle = tuning::ridge::recombined_split_degrees;
     st_.ridge.recombined_copies = Recombined_copy_splitter<TriangleMesh, VertexPointMap, FaceIndexMap, Point>(
         tm_, maps_.vpm, maps_.fim, E_, copy_corners_, witness_tolerance, recombined_split_angle)(face_copies_);
     std::vector<std::array<double, 3> >().swap(copy_corners_);

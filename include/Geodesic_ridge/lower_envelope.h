@@ -19,6 +19,7 @@
 #define GEODESIC_RIDGE_LOWER_ENVELOPE_H
 
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/tuning.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -231,7 +232,7 @@ Vertex<FT> make_vertex(std::array<FT, 3> w,
       for(int k = 0; k < 3; ++k) {
         w[k] = w[k] / s;
         const FT lo = (std::min)(P.w[k], Q.w[k]), hi = (std::max)(P.w[k], Q.w[k]);
-        const FT slack = FT(1e-9);
+        const FT slack = FT(tuning::envelope::barycentric_slack);
         if(!(w[k] >= lo - slack && w[k] <= hi + slack)) ok = false; // also catches NaN
       }
     }

@@ -23,6 +23,7 @@
 #include <Geodesic_ridge/internal/face_copies.h>
 #include <Geodesic_ridge/internal/faces_by_index.h>
 #include <Geodesic_ridge/internal/field_gradients.h>
+#include <Geodesic_ridge/internal/tuning.h>
 #include <Geodesic_ridge/solvers/Face_cone.h>
 
 #include <CGAL/Bbox_3.h>
@@ -338,7 +339,7 @@ public:
                 double split_angle, double mean_edge, bool corner_fallback = false)
       : faces_(tm, vpm, fim), E_(E), cones_(cones), samples_(samples),
         first_fallback_(corner_fallback && samples.size() >= 3 ? samples.size() - 3 : samples.size()),
-        split_angle_(split_angle), same_apex_(1e-6 * mean_edge) // round-off of the unfolding
+        split_angle_(split_angle), same_apex_(tuning::ridge::same_apex * mean_edge)
   {}
 
   // `front_cones`, if given, gets per split copy the cones of its fronts, one
@@ -608,7 +609,7 @@ public:
                         const Copy_cones* cones = nullptr)
     : tm_(tm), maps_(maps), E_(E), face_copies_(face_copies), mean_edge_(mean_edge), minimum_angle_(minimum_angle),
       kink_angle_(kink_angle), angle_sum_(angle_sum), regions_(regions), st_(st), faces_(tm, maps.vpm, maps.fim),
-      nf_(num_faces(tm)), same_front_tolerance_(1e-6 * mean_edge), cones_(cones),
+      nf_(num_faces(tm)), same_front_tolerance_(tuning::ridge::same_front * mean_edge), cones_(cones),
       coincident_(coincident_tolerance(tm, maps.vpm))
   {}
 
@@ -895,7 +896,7 @@ private:
                          std::array<double, 3>& direction) const
   {
     typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
-    const double consistent_angle = 15;
+    const double consistent_angle = tuning::ridge::consistent_arrival_degrees;
     if(!cones_) return false;
     const std::size_t S = cones_->samples->size();
     const Cell& cell = cells_[c];
@@ -1018,7 +1019,7 @@ private:
   // likewise (user manual, \ref GeodesicRidgeSecThinFaces).
   void thin_faces()
   {
-    const double thin_face_ratio = 0.05;
+    const double thin_face_ratio = tuning::ridge::thin_face_ratio;
     thin_.assign(nf_, 0);
     for(std::size_t f = 0; f < nf_; ++f)
     {
@@ -1169,7 +1170,7 @@ private:
     auto agree = [&](const Q& t) {
       return std::abs(value(cells_[c1], k1, t) - value(cells_[c2], k2, Q(1) - t)) <= same_front_tolerance_;
     };
-    return agree(ta) && agree(tb) && (thin || jump.strength <= 1e-6 || jump.angle < minimum_angle_);
+    return agree(ta) && agree(tb) && (thin || jump.strength <= tuning::ridge::weak_jump || jump.angle < minimum_angle_);
   }
 
   // the jump across the piece p of edge k1 of f1 (edge k2 of f2), at its
@@ -1556,14 +1557,14 @@ private:
   // junctions are never touched.
   void prune_spurs()
   {
-    const double minimum_curvature = radians(0.5 * minimum_angle_);
+    const double minimum_curvature = radians(tuning::ridge::spur_curvature_share * minimum_angle_);
     // A weak free end with at least this much curvature around it (a cube's
     // corner has 90 degrees) ends where the cut locus must: at a vertex of
     // positive curvature. It is kept: its position is ill-conditioned, but the
     // branch is real. Measured (bench_ridge_accuracy): bunny_1k v0 recall p95
     // 2.38 -> 0.75 mean edges, precision p95 0.27 -> 0.44; the convex test
     // polyhedra reach 8 more corners.
-    const double corner_curvature = radians(60);
+    const double corner_curvature = radians(tuning::ridge::spur_corner_degrees);
     // But not every weak end there: the cut locus ends at a vertex of positive
     // curvature with a jump about that vertex's angle deficit (the two fronts
     // come around it on either side), so an end whose jump is a small part of
@@ -1574,7 +1575,7 @@ private:
     // edges of one of eight corners of 79-91 degrees (spurs of 0.1-1.9 mean
     // edges). Measured (bench_ridge_accuracy, exact): real models' precision
     // p95 <= 0.25 on 47 -> 50 of 72 pairs, fandisk's median 0.44 -> 0.31.
-    const double corner_end_angle = minimum_angle_ / 3;
+    const double corner_end_angle = minimum_angle_ / tuning::ridge::spur_corner_end_divisor;
     // But a weak end exactly at a vertex of M without positive curvature (a
     // saddle, or a flat vertex of a CAD model's face) ends where the cut locus
     // cannot, whatever the curvature around it: the ridge drawn there is a
@@ -1639,7 +1640,7 @@ private:
       if(p.barycentric[i] == 1.0) // (exact: a node at a vertex has λ = 1 there)
       {
         const std::size_t v = get(maps_.vim, source(h[i], tm_));
-        return loop_of_vertex_[v] == none && vertex_curvature(v) <= 1e-9;
+        return loop_of_vertex_[v] == none && vertex_curvature(v) <= tuning::ridge::flat_vertex_curvature;
       }
     return false;
   }
@@ -1660,7 +1661,7 @@ private:
 
     double operator()(std::size_t node)
     {
-      const double radius = 2.5 * a.mean_edge_;
+      const double radius = tuning::ridge::curvature_radius * a.mean_edge_;
       const Point& p = a.nodes_[node].point;
       std::vector<std::size_t> stack;
       double total = 0;

@@ -16,6 +16,7 @@
 #include <Geodesic_ridge/internal/graph_polylines.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/normalization.h>
+#include <Geodesic_ridge/internal/tuning.h>
 #include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/mesh_validation.h>
 #include <Geodesic_ridge/parameters.h>
@@ -590,7 +591,7 @@ private:
       const std::size_t p = parent_of(d);
       if(kept_[d] || false_branch_[d] || !inside[p]) continue;
       const bool goes_on =
-          inside[p] == 2 && best_child[p] == d && subtree_curvature_[d] >= 0.25 * options_.leaf_curvature;
+          inside[p] == 2 && best_child[p] == d && subtree_curvature_[d] >= tuning::rough_cut::extension_curvature_share * options_.leaf_curvature;
       if(!goes_on && subtree_curvature_[d] < options_.leaf_curvature) continue;
       extension_[d] = 1;
       inside[child_face_[d]] = 2;
@@ -781,9 +782,9 @@ private:
   // degrees cut real branches through the 77-90 degree ear tips of bunny_1k
   // (recall p95 at tolerance 0.001 0.27 -> 4.5 mean edges), hence the sharper
   // threshold here.
-  static double corner_curvature() { return radians(60); }
+  static double corner_curvature() { return radians(tuning::rough_cut::corner_degrees); }
   // (a doubly covered square's corners have 180 degrees)
-  static double sharp_corner_curvature() { return radians(100); }
+  static double sharp_corner_curvature() { return radians(tuning::rough_cut::sharp_corner_degrees); }
 
   void move_leaves_onto_corners()
   {

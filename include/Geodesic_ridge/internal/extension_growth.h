@@ -12,6 +12,7 @@
 #include <Geodesic_ridge/extended_surface.h>
 #include <Geodesic_ridge/internal/face_copies.h>
 #include <Geodesic_ridge/internal/field_gradients.h>
+#include <Geodesic_ridge/internal/tuning.h>
 #include <Geodesic_ridge/lower_envelope.h>
 #include <Geodesic_ridge/source.h>
 #include <Geodesic_ridge/solvers/Face_cone.h>
@@ -311,8 +312,8 @@ public:
       E_(E), face_copies_(face_copies), vertex_distances_(vertex_distances), st_(st), timings_(timings),
       cones_(cones), cone_samples_(cone_samples), cones_near_kinks_only_(cones_near_kinks_only),
       whole_faces_(whole_faces),
-      across_(builder.faces_across_edges()), fast_marching_slack_(0.02 * mean_edge), exact_slack_(1e-9 * mean_edge),
-      reopen_margin_(1e-9 * mean_edge)
+      across_(builder.faces_across_edges()), fast_marching_slack_(tuning::extension::fast_marching_slack * mean_edge),
+      exact_slack_(tuning::extension::exact_slack * mean_edge), reopen_margin_(tuning::extension::reopen_margin * mean_edge)
   {}
 
   void run()
