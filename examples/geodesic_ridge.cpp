@@ -575,10 +575,9 @@ public:
 
   void succeed(std::size_t k, const Ridge& rc)
   {
-    Json j = {{"parameters", {{"mesh", o_.mesh}, {"source", sources_[k].text}}},
-              {"ridge", {{"polylines", rc.polylines.size()}, {"cone_polylines", rc.cone_polylines.size()}}},
-              {"statistics", rc.statistics}};
+    Json j = {{"parameters", {{"mesh", o_.mesh}, {"source", sources_[k].text}}}};
     j["parameters"].update(batch_parameters(o_));
+    j.update(ridge_json(rc)); // the keys of a single run's --stats
     j["timings_seconds"] = timings_json(rc, 0);
     const std::string polylines = name(k, ".polylines.txt"), json = name(k, ".json");
     write_polylines(path(polylines), points_of(rc.ridge_polylines()));
