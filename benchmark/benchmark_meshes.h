@@ -10,7 +10,10 @@
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -35,6 +38,8 @@ inline std::vector<std::string> benchmark_meshes(std::vector<std::string> files)
 ///   --spur-angle DEG --tree-from-solver 0|1 --predicted 0|1
 ///   --leaf-curvature DEG --branch-curvature DEG --kink-angle DEG --corner-fallback 0|1
 ///   --cone-ridge 0|1 (with the solvers that have cones: `cone_parameters()`)
+///   --without PASS[,PASS...]: stage 3's optional passes and spur rules switched off (the names:
+///     `internal::ridge_pass_names()`, printed for an unknown one)
 struct Pipeline_options
 {
   int initial_rings = Geodesic_ridge::default_initial_rings, extension_step = Geodesic_ridge::default_extension_step,
@@ -45,6 +50,7 @@ struct Pipeline_options
   double spur_angle = Geodesic_ridge::default_minimum_spur_angle,
          leaf_curvature = Geodesic_ridge::default_leaf_curvature, kink_angle = Geodesic_ridge::default_kink_angle,
          branch_curvature = Geodesic_ridge::default_branch_curvature;
+  unsigned disabled_passes = 0; // a bit per switched-off pass (`internal::Ridge_pass`)
 
   /// consumes argv[i] (and its value) if it is one of the options above
   bool parse(int argc, char** argv, int& i)
@@ -64,8 +70,28 @@ struct Pipeline_options
     else if(a == "--corner-fallback") corner_fallback = std::stoi(argv[++i]) != 0;
     else if(a == "--cone-ridge") cone_ridge = std::stoi(argv[++i]) != 0;
     else if(a == "--branch-curvature") branch_curvature = std::stod(argv[++i]);
+    else if(a == "--without") disabled_passes |= ridge_passes(argv[++i]);
     else return false;
     return true;
+  }
+
+  /// the bits of a comma-separated list of pass names; exits on an unknown one
+  static unsigned ridge_passes(const std::string& list)
+  {
+    unsigned bits = 0;
+    std::stringstream names(list);
+    for(std::string name; std::getline(names, name, ',');)
+    {
+      bool known = false;
+      for(const auto& [n, pass] : Geodesic_ridge::internal::ridge_pass_names())
+        if(name == n) { bits |= static_cast<unsigned>(pass); known = true; }
+      if(known) continue;
+      std::cerr << "--without: unknown pass '" << name << "'; the passes:";
+      for(const auto& np : Geodesic_ridge::internal::ridge_pass_names()) std::cerr << ' ' << np.first;
+      std::cerr << '\n';
+      std::exit(2);
+    }
+    return bits;
   }
 
   auto parameters(double tolerance) const
@@ -75,7 +101,8 @@ struct Pipeline_options
            p::maximum_rings(maximum_rings, p::maximum_solves(maximum_solves,
            p::minimum_spur_angle(spur_angle, p::tree_from_solver(tree_from_solver, p::predicted_extension(predicted,
            p::leaf_curvature(leaf_curvature, p::branch_curvature(branch_curvature, p::kink_angle(kink_angle,
-           p::corner_fallback(corner_fallback, p::fast_marching_margin(fast_marching_margin)))))))))))));
+           p::corner_fallback(corner_fallback, p::fast_marching_margin(fast_marching_margin,
+           p::disabled_ridge_passes(disabled_passes))))))))))))));
   }
 
   /// with a solver that has cones (exact, vtp): the parameters and whether

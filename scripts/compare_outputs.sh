@@ -8,6 +8,10 @@
 # statistics' counts (timings excluded). Numbers must agree to 1e-9 relative to
 # the mesh size; text must be identical.
 #   bash scripts/compare_outputs.sh OLD_CLI NEW_CLI [MAX_FACES]
+# SOLVERS (default "exact fmm") and EXTRA_ARGS (default none) change the runs,
+# e.g. SOLVERS=vtp EXTRA_ARGS="--field cone" for the window propagation's cones.
+# NEW_KEYS (comma-separated): statistics keys the new build added, left out of
+# the comparison.
 # Exit status 0 iff every run agrees.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -17,15 +21,17 @@ runs=0; differences=0
 
 compare() {  # compare FILE_A FILE_B SCALE: token by token, numbers to 1e-9*SCALE
   python3 - "$1" "$2" "$3" <<'EOF'
-import json, re, sys
+import json, os, re, sys
 a_path, b_path, scale = sys.argv[1], sys.argv[2], float(sys.argv[3])
+new_keys = set(k for k in os.environ.get('NEW_KEYS', '').split(',') if k)
 def tokens(path):
     text = open(path).read()
     if path.endswith('.json'):  # counts only: drop timings
         data = json.loads(text)
         def strip(d):
             if isinstance(d, dict):
-                return {k: strip(v) for k, v in d.items() if 'time' not in k and 'second' not in k}
+                return {k: strip(v) for k, v in d.items()
+                        if 'time' not in k and 'second' not in k and k not in new_keys}
             return d
         text = json.dumps(strip(data), sort_keys=True)
     return re.findall(r'[^\s,:\[\]{}"]+', text)
@@ -59,13 +65,13 @@ for mesh in $meshes; do
     echo "$third $(awk -v v="$corner" 'NR==3+v {print $1, $2, $3}' "$mesh")"; } \
     > "$work/queries.txt"
   for source in "--source-vertex $((vertices / 3))" "--source-point $((faces / 2)) $point"; do
-    for solver in exact fmm; do
+    for solver in ${SOLVERS:-exact fmm}; do
       runs=$((runs + 1))
       for side in old new; do
         d="$work/$side"; rm -rf "$d"; mkdir -p "$d"
         cli=$old; [ $side = new ] && cli=$new
         # shellcheck disable=SC2086
-        "$cli" "$mesh" $source --solver $solver --tolerance 0.01 \
+        "$cli" "$mesh" $source --solver $solver --tolerance 0.01 ${EXTRA_ARGS:-} \
           --ridge "$d/ridge.polylines.txt" --ridge-locations "$d/locations.txt" \
           --rough-cut "$d/rough.polylines.txt" --refined "$d/refined.ply" --ply-ascii \
           --isolines 7 "$d/isolines.polylines.txt" \

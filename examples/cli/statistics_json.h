@@ -39,7 +39,8 @@ GEODESIC_RIDGE_JSON_FIELDS(Ridge_curve_statistics, ridge_segments, junctions, fr
                            edge_segments, thin_face_pieces, regions_before_merge, merged_segments, rejoined_segments,
                            border_joining_segments,
                            dropped_components, piece_joining_segments,
-                           pruned_spur_segments, pruned_flat_end_segments, coincident_points)
+                           pruned_spur_segments, spurs_at_impossible_ends, spurs_away_from_corners,
+                           spurs_too_weak_for_corners, pruned_flat_end_segments, coincident_points)
 GEODESIC_RIDGE_JSON_FIELDS(Cone_ridge_statistics, tolerance, points_moved, junctions_moved, points_kept, points_added,
                            kept_linear_ridge,
                            largest_move)

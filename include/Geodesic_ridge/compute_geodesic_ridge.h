@@ -14,6 +14,7 @@
 #include <Geodesic_ridge/lower_envelope.h>
 #include <Geodesic_ridge/parameters.h>
 #include <Geodesic_ridge/ridge_curve.h>
+#include <Geodesic_ridge/internal/ridge_curve/assemble_ridge_curve.h>
 #include <Geodesic_ridge/rough_cut_locus.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>
 #include <Geodesic_ridge/solvers/Fast_marching_solver.h>
@@ -103,6 +104,7 @@ struct Pipeline_options
   double minimum_angle, kink_angle, cone_ridge_tolerance;
   bool tree_from_solver, predicted, corner_fallback, cone_ridge;
   Field field;
+  Ridge_passes ridge_passes; // (all on unless `disabled_ridge_passes` says otherwise)
 };
 
 template <class NamedParameters, class Solver>
@@ -123,6 +125,7 @@ Pipeline_options pipeline_options(const NamedParameters& np, const Solver& solve
   o.cone_ridge_tolerance = get_number_in_range<internal_np::cone_ridge_tolerance_t>(
       np, default_cone_ridge_tolerance, std::numeric_limits<double>::min(), 1, false, "cone ridge tolerance", "(0, 1]");
   o.tree_from_solver = choose_parameter(get_parameter(np, internal_np::tree_from_solver_t()), false);
+  o.ridge_passes.disabled = choose_parameter(get_parameter(np, internal_np::disabled_ridge_passes_t()), 0u);
   // the cone field's own samples are next to the corners already
   o.corner_fallback = choose_parameter(get_parameter(np, internal_np::corner_fallback_t()), true) &&
                       o.field != Field::cone;
@@ -346,44 +349,18 @@ private:
     return corner_fallback() ? Exact_solver::corner_fallback_samples() : Exact_solver::corner_samples();
   }
 
-  // Stage 2c + 3: copies split at kinks, exact envelopes and the ridge curve.
+  // Stage 3 (with the copy splitters before the envelopes): the ridge curve.
   void assemble_ridge()
   {
-    std::size_t split_copies = 0;
-    // without a split, the copies as they are (no copy of them: they are a few
-    // heap blocks per face, at the peak of memory)
-    std::vector<Face_copies> split_fronts;
-    // Copies that recombine nearer sheets' fronts: a corner's owner within a
-    // tenth of a mean edge of the copy's distance (0.05 missed teddy_3k v383
-    // and bunny_1k v80 at tolerance 0.002, 0.25 placed teddy_3k v383's ridge
-    // worse), owners 30 degrees apart (the fronts meet where the precision is
-    // measured). With the cone field too: the cone ridge is traced from the
-    // linear one and keeps its branches (bunny_7k v1951 and f6223, bunny_1k
-    // v80 at tolerance 0.002: recall p95 2.52, 2.34 and 0.61 mean edges
-    // without the split, 0.23, 0.21 and 0.10 with it).
-    const double witness_tolerance = tuning::ridge::recombined_witness_tolerance * mean_edge_,
-                 recombined_split_angle = tuning::ridge::recombined_split_degrees;
-    st_.ridge.recombined_copies = Recombined_copy_splitter<TriangleMesh, VertexPointMap, FaceIndexMap, Point>(
-        tm_, maps_.vpm, maps_.fim, E_, copy_corners_, witness_tolerance, recombined_split_angle)(face_copies_);
-    std::vector<std::array<double, 3> >().swap(copy_corners_);
     // the cone ridge (not the cone field's, whose cones are its queries') sees
     // the fronts of a split copy as copies: it moves the kink's points too
-    std::map<std::size_t, std::vector<Face_cone> > front_cones;
     const bool fronts_as_copies = options_.cone_ridge && options_.field != Field::cone;
-    if(split_at_kinks())
-    {
-      split_fronts = Kink_splitter<TriangleMesh, VertexPointMap, FaceIndexMap, Point>(
-          tm_, maps_.vpm, maps_.fim, E_, copy_cones_, cone_samples(), options_.kink_angle, mean_edge_,
-          corner_fallback())(face_copies_, split_copies, fronts_as_copies ? &front_cones : nullptr);
-      if(!front_cones.empty()) cones_with_fronts(front_cones);
-    }
-    // the cone ridge's cones (the copies' and the split fronts') give the
-    // fronts' arrival directions at the ridge segments
-    const Copy_cones cones{&copy_cones_, &front_cones, &cone_samples()};
-    assemble_ridge_curve(tm_, E_, split_at_kinks() ? split_fronts : face_copies_, mean_edge_, options_.minimum_angle,
-                         options_.kink_angle, maps_, angles_->angle_sum, result_.polylines, result_.regions, st_.ridge,
-                         fronts_as_copies ? &cones : nullptr);
-    st_.ridge.split_copies = split_copies;
+    const Ridge_curve_input in{face_copies_, copy_corners_, copy_cones_, cone_samples(), angles_->angle_sum,
+                               mean_edge_, options_.minimum_angle, options_.kink_angle, split_at_kinks(),
+                               corner_fallback(), fronts_as_copies, options_.ridge_passes};
+    std::map<std::size_t, std::vector<Face_cone> > front_cones;
+    assemble_ridge_curve(tm_, E_, maps_, in, result_.polylines, result_.regions, st_.ridge, front_cones);
+    if(!front_cones.empty()) cones_with_fronts(front_cones);
   }
 
   void check_ridge_topology() const

@@ -45,6 +45,7 @@ struct field_t {};
 struct cone_ridge_tolerance_t {};
 struct cone_ridge_t {};
 struct vertex_distance_map_t {};
+struct disabled_ridge_passes_t {};
 } // namespace internal_np
 
 /// \ingroup PkgGeodesicRidgeNamedParameters
@@ -160,6 +161,7 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   GEODESIC_RIDGE_CHAINED_PARAMETER(Field, field)
   GEODESIC_RIDGE_CHAINED_PARAMETER(bool, cone_ridge)
   GEODESIC_RIDGE_CHAINED_PARAMETER(double, cone_ridge_tolerance)
+  GEODESIC_RIDGE_CHAINED_PARAMETER(unsigned, disabled_ridge_passes)
 #undef GEODESIC_RIDGE_CHAINED_PARAMETER
 
   template <class Solver>
@@ -346,6 +348,13 @@ GEODESIC_RIDGE_NAMED_PARAMETER(bool, cone_ridge)
 /// is split until the curve is within `t` mean edge lengths of the midpoint of
 /// every chord (default `default_cone_ridge_tolerance`; `t` in (0, 1]).
 GEODESIC_RIDGE_NAMED_PARAMETER(double, cone_ridge_tolerance)
+
+/// \cond SKIP_IN_MANUAL
+/// For measuring, not for use: stage 3's optional passes and spur rules to
+/// switch off, a bit each (`internal::Ridge_pass`; `bench_ridge_accuracy
+/// --without NAME`). Default 0: every pass runs.
+GEODESIC_RIDGE_NAMED_PARAMETER(unsigned, disabled_ridge_passes)
+/// \endcond
 
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Named parameter of `refine_mesh_along_ridge()`: a writable vertex property
