@@ -15,6 +15,7 @@
 #define GEODESIC_RIDGE_EXTENDED_SURFACE_H
 
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/extended_surface_writer.h>
 #include <Geodesic_ridge/internal/faces_by_index.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/union_find.h>
@@ -103,6 +104,7 @@ namespace internal {
 template <class TriangleMesh, class Maps>
 class Extended_surface_builder
 {
+  template <class, class> friend class Extended_surface_writer;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef typename Maps::Point Point_3;
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
@@ -163,33 +165,13 @@ public:
     stats_.faces_per_ring.push_back(copies_.size() - before);
   }
 
-  /// Writes E as a `Surface_mesh`: its vertices (one per merged vertex copy),
-  /// its glued halfedges, its faces (one per copy) and its border, then the
-  /// source in it. With `validate`, checks that E is a valid polygon mesh
+  /// Writes E as a `Surface_mesh` (`Extended_surface_writer`), then its
+  /// statistics. With `validate`, checks that E is a valid polygon mesh
   /// (else only in debug builds: the growth checks the E it ends with).
   template <class Point>
   void materialize(Extended_surface<Point>& E, const Geodesic_source<TriangleMesh>& src, bool validate = true)
   {
-    typedef typename Extended_surface<Point>::Mesh Mesh;
-    E.mesh.clear();
-    const std::vector<std::array<std::uint32_t, 3> > corner_vertex = number_vertices(E);
-    // E is rebuilt at every pass: its arrays are sized once and filled by
-    // index (vertex v, edge e with halfedges 2e and 2e + 1, face c = copy c)
-    E.mesh.resize(static_cast<typename Mesh::size_type>(E.original_vertex.size()),
-                  static_cast<typename Mesh::size_type>(number_of_edges()),
-                  static_cast<typename Mesh::size_type>(copies_.size()));
-    for(std::size_t v = 0; v < E.original_vertex.size(); ++v)
-      E.mesh.point(typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(v))) =
-          get(maps_.vpm, vertex_of_[E.original_vertex[v]]);
-    // halfedge (c, k) runs from corner k to corner k+1 of copy c
-    const std::vector<std::array<typename Mesh::Halfedge_index, 3> > he = add_edges(E.mesh);
-    add_faces(E, corner_vertex, he);
-    link_border(E.mesh, corner_vertex, he);
-#ifndef NDEBUG
-    validate = true; // every E is checked in debug builds
-#endif
-    if(validate) check_valid(E);
-    place_source(E, src, corner_vertex);
+    Extended_surface_writer<TriangleMesh, Extended_surface_builder>(*this).write(E, src, validate);
     stats_.number_of_faces = E.mesh.number_of_faces();
     stats_.number_of_vertices = E.mesh.number_of_vertices();
     E.statistics = stats_;
@@ -296,128 +278,6 @@ private:
     if(fan.leaf) ++stats_.number_of_leaf_vertices;
   }
 
-  // the vertex of E at corner k of copy c
-  template <class Mesh>
-  static typename Mesh::Vertex_index vertex_at(const std::vector<std::array<std::uint32_t, 3> >& corner_vertex,
-                                               std::uint32_t c, int k)
-  {
-    return typename Mesh::Vertex_index(corner_vertex[c][k % 3]);
-  }
-
-  // one vertex of E per merged vertex copy, numbered in order of first use
-  // (with its original in `E.original_vertex`); returns the vertex of E at
-  // every corner of every copy
-  template <class Point>
-  std::vector<std::array<std::uint32_t, 3> > number_vertices(Extended_surface<Point>& E)
-  {
-    std::vector<std::uint32_t> evertex(vertex_copies_.size(), none);
-    std::vector<std::array<std::uint32_t, 3> > corner_vertex(copies_.size());
-    E.original_vertex.clear();
-    for(std::uint32_t c = 0; c < copies_.size(); ++c)
-      for(int k = 0; k < 3; ++k)
-      {
-        const std::uint32_t root = find(copies_[c].corner[k]);
-        if(evertex[root] == none)
-        {
-          evertex[root] = static_cast<std::uint32_t>(E.original_vertex.size());
-          E.original_vertex.push_back(fans_[root].vertex);
-        }
-        corner_vertex[c][k] = evertex[root];
-      }
-    return corner_vertex;
-  }
-
-  // the edges of E: one per glued pair of copy edges or border copy edge
-  std::size_t number_of_edges() const
-  {
-    std::size_t n = 0;
-    for(std::uint32_t c = 0; c < copies_.size(); ++c)
-      for(int k = 0; k < 3; ++k) n += copies_[c].nb[k] == none || copies_[c].nb[k] >= c;
-    return n;
-  }
-
-  // one edge of E per glued pair of copy edges or border copy edge (E's
-  // arrays are sized: edge e is the e-th met)
-  template <class Mesh>
-  std::vector<std::array<typename Mesh::Halfedge_index, 3> > add_edges(Mesh& m) const
-  {
-    std::vector<std::array<typename Mesh::Halfedge_index, 3> > he(copies_.size());
-    typename Mesh::size_type e = 0;
-    for(std::uint32_t c = 0; c < copies_.size(); ++c)
-      for(int k = 0; k < 3; ++k)
-      {
-        const Copy& cc = copies_[c];
-        if(cc.nb[k] != none && cc.nb[k] < c) continue; // created from the other side
-        const auto h = m.halfedge(typename Mesh::Edge_index(e++));
-        he[c][k] = h;
-        if(cc.nb[k] != none) he[cc.nb[k]][cc.nb_edge[k]] = m.opposite(h);
-      }
-    return he;
-  }
-
-  template <class Point, class Halfedges>
-  void add_faces(Extended_surface<Point>& E, const std::vector<std::array<std::uint32_t, 3> >& evertex,
-                 const Halfedges& he)
-  {
-    typedef typename Extended_surface<Point>::Mesh Mesh;
-    Mesh& m = E.mesh;
-    E.original_face.resize(copies_.size());
-    E.ring.resize(copies_.size());
-    for(std::uint32_t c = 0; c < copies_.size(); ++c)
-    {
-      const typename Mesh::Face_index f(static_cast<typename Mesh::size_type>(c));
-      E.original_face[c] = copies_[c].face;
-      E.ring[c] = copies_[c].ring;
-      m.set_halfedge(f, he[c][0]);
-      for(int k = 0; k < 3; ++k)
-      {
-        const auto h = he[c][k];
-        m.set_face(h, f);
-        m.set_target(h, vertex_at<Mesh>(evertex, c, k + 1));
-        m.set_next(h, he[c][(k + 1) % 3]);
-        m.set_halfedge(vertex_at<Mesh>(evertex, c, k + 1), h);
-      }
-    }
-  }
-
-  // border halfedges: opposite of (c, k) unglued, from corner k+1 to corner k;
-  // its next leaves corner k at the other end of that vertex copy's fan.
-  template <class Mesh, class Halfedges>
-  void link_border(Mesh& m, const std::vector<std::array<std::uint32_t, 3> >& evertex, const Halfedges& he)
-  {
-    for(std::uint32_t c = 0; c < copies_.size(); ++c)
-      for(int k = 0; k < 3; ++k)
-      {
-        if(copies_[c].nb[k] != none) continue;
-        const auto b = m.opposite(he[c][k]);
-        const std::uint32_t u = find(copies_[c].corner[k]);
-        m.set_face(b, Mesh::null_face());
-        m.set_target(b, vertex_at<Mesh>(evertex, c, k));
-        const std::uint32_t first = fans_[u].first;
-        const int kf = position_of_copy(first, u);
-        m.set_next(b, m.opposite(he[first][(kf + 2) % 3]));
-        m.set_halfedge(vertex_at<Mesh>(evertex, c, k), b);
-      }
-  }
-
-  template <class Point>
-  void place_source(Extended_surface<Point>& E, const Geodesic_source<TriangleMesh>& src,
-                    const std::vector<std::array<std::uint32_t, 3> >& evertex)
-  {
-    typedef typename Extended_surface<Point>::Mesh Mesh;
-    E.source_is_vertex = (src.kind == Geodesic_source<TriangleMesh>::ON_VERTEX);
-    E.source_location.first =
-        typename Mesh::Face_index(static_cast<typename Mesh::size_type>(get(maps_.fim, src.location.first)));
-    E.source_location.second = src.location.second;
-    if(!E.source_is_vertex) return;
-    // Looked up now that the mesh is final: vertex numbering changes as copies merge.
-    const std::uint32_t sv = static_cast<std::uint32_t>(get(maps_.vim, src.vertex));
-    const std::uint32_t f = static_cast<std::uint32_t>(get(maps_.fim, src.location.first));
-    E.source_vertex = vertex_at<Mesh>(evertex, f, position_of(f, sv));
-    if(E.original_vertex[E.source_vertex] != sv || (CGAL::is_border(E.source_vertex, E.mesh) && !border_vertex_[sv]))
-      throw Algorithm_error("the source is not an interior vertex of the extended surface");
-  }
-
   // the face of M across edge k of face f
   std::uint32_t face_across(std::uint32_t f, int k) const { return static_cast<std::uint32_t>(across_[f][k].first); }
   // edge k of face f is on the border of M: E never grows across it
@@ -429,7 +289,7 @@ private:
   {
     return corner_[f][0] == v ? 0 : (corner_[f][1] == v ? 1 : 2);
   }
-  int position_of_copy(std::uint32_t c, std::uint32_t root)
+  int position_of_copy(std::uint32_t c, std::uint32_t root) const
   {
     for(int k = 0; k < 3; ++k)
       if(find(copies_[c].corner[k]) == root) return k;
