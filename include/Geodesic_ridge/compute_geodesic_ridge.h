@@ -199,7 +199,7 @@ public:
 
 private:
   // Stage 1 follows a tree that descends a geodesic distance on M (see
-  // `Rough_cut_locus_builder::descend_field`): fast marching, or the solver itself.
+  // `rough_cut::descend_field`): fast marching, or the solver itself.
   std::vector<double> distances_on_mesh()
   {
     std::vector<double> field(num_vertices(tm_));

@@ -12,12 +12,9 @@
 
 #include <Geodesic_ridge/exceptions.h>
 #include <Geodesic_ridge/internal/corner_angles.h>
-#include <Geodesic_ridge/internal/edge_graph_distances.h>
 #include <Geodesic_ridge/internal/graph_polylines.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/normalization.h>
-#include <Geodesic_ridge/internal/tuning.h>
-#include <Geodesic_ridge/internal/union_find.h>
 #include <Geodesic_ridge/mesh_validation.h>
 #include <Geodesic_ridge/parameters.h>
 #include <Geodesic_ridge/source.h>
@@ -26,16 +23,13 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <deque>
 #include <limits>
-#include <queue>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -131,6 +125,19 @@ struct Rough_cut_locus
   Timings timings;
 };
 
+} // namespace Geodesic_ridge
+
+// The passes of stage 1, one group per header, as functions of the state they
+// share (internal/rough_cut/state.h, which fills the result types above).
+#include <Geodesic_ridge/internal/rough_cut/state.h>
+#include <Geodesic_ridge/internal/rough_cut/shortest_path_tree.h>
+#include <Geodesic_ridge/internal/rough_cut/dual_significance.h>
+#include <Geodesic_ridge/internal/rough_cut/dual_pruning.h>
+#include <Geodesic_ridge/internal/rough_cut/cut_graph.h>
+#include <Geodesic_ridge/internal/rough_cut/corners.h>
+#include <Geodesic_ridge/internal/rough_cut/checks.h>
+
+namespace Geodesic_ridge {
 namespace internal {
 
 // Stage 1 as its named steps (the manual's order), over the state they share.
@@ -138,903 +145,56 @@ namespace internal {
 template <class TriangleMesh, class Maps>
 class Rough_cut_locus_builder
 {
-  typedef boost::graph_traits<TriangleMesh>  GT;
-  typedef typename GT::vertex_descriptor    vertex_descriptor;
-  typedef typename GT::halfedge_descriptor  halfedge_descriptor;
-  typedef typename GT::edge_descriptor      edge_descriptor;
-  typedef typename GT::face_descriptor      face_descriptor;
-  typedef Geodesic_source<TriangleMesh>     Source;
+  typedef rough_cut::State<TriangleMesh, Maps> State;
 
 public:
-  // The curvature thresholds in radians.
-  struct Options
-  {
-    double tolerance = default_tolerance, leaf_curvature = 0, branch_curvature = 0;
-    // the mesh's corner angles, when a batch of sources computed them once
-    const Corner_angles* corner_angles = nullptr;
-  };
+  typedef typename State::Options Options;
 
-  Rough_cut_locus_builder(const TriangleMesh& tm, const Source& src, const Maps& maps, const Options& options)
-    : tm_(tm), src_(src), maps_(maps), options_(options),
-      nv_(num_vertices(tm)), ne_(num_edges(tm)), nf_(num_faces(tm)), st_(r_.statistics)
+  Rough_cut_locus_builder(const TriangleMesh& tm, const Geodesic_source<TriangleMesh>& src, const Maps& maps,
+                          const Options& options)
+    : s_(tm, src, maps, options)
   {}
 
   // `field`, if given, holds a geodesic distance per vertex (by vertex index):
   // the tree then follows it (`descend_field`) instead of Dijkstra's edge distances.
   Rough_cut_locus<TriangleMesh> run(const std::vector<double>* field = nullptr)
   {
-    Timings& timings = r_.timings;
-    timings.time("shortest_path_tree", [&] {
-      count_elements();
-      shortest_path_tree();
-      if(field != nullptr) descend_field(*field);
+    Timings& timings = s_.r.timings;
+    timings.time("shortest_path_tree", [&] {          // rough_cut/shortest_path_tree.h
+      rough_cut::count_elements(s_);                  // genus, border loops, elements by index
+      rough_cut::shortest_path_tree(s_);              // Dijkstra along mesh edges
+      if(field != nullptr) rough_cut::descend_field(s_, *field); // or down the given field
     });
-    timings.time("significance", [&] {
-      classify_edges();
-      measure_face_areas();
-      build_dual_adjacency();
-      share_curvature_among_faces();
-      peel_significance();
+    timings.time("significance", [&] {                // rough_cut/dual_significance.h
+      rough_cut::classify_edges(s_);                  // in T, at the source, or crossed by T*
+      rough_cut::measure_face_areas(s_);
+      rough_cut::build_dual_adjacency(s_);
+      rough_cut::share_curvature_among_faces(s_);     // per face, for the branch sums
+      rough_cut::peel_significance(s_);               // area (and curvature) per dual edge
     });
     timings.time("cut_graph", [&] {
-      prune_by_significance();
-      prune_false_branches();
-      if(!st_.fallback_single_rung && options_.leaf_curvature > 0) extend_leaves_by_curvature();
-      record_dual_roles();
-      span_rungs();
-      close_handle_cycles();
-      remove_teeth();
-      if(!st_.fallback_single_rung && options_.leaf_curvature > 0)
+      rough_cut::prune_by_significance(s_);           // rough_cut/dual_pruning.h
+      rough_cut::prune_false_branches(s_);            // no curvature enclosed
+      if(!s_.st.fallback_single_rung && s_.options.leaf_curvature > 0)
+        rough_cut::extend_leaves_by_curvature(s_);    // towards the tips of the ridge
+      rough_cut::record_dual_roles(s_);
+      rough_cut::span_rungs(s_);                      // rough_cut/cut_graph.h: Kruskal
+      rough_cut::close_handle_cycles(s_);             // the 2g rungs back
+      rough_cut::remove_teeth(s_);
+      if(!s_.st.fallback_single_rung && s_.options.leaf_curvature > 0)
       {
-        move_leaves_onto_corners();
-        remove_prongs_at_corner_forks();
-        join_corners();
+        rough_cut::move_leaves_onto_corners(s_);      // rough_cut/corners.h
+        rough_cut::remove_prongs_at_corner_forks(s_);
+        rough_cut::join_corners(s_);
       }
-      collect_cut_edges();
+      rough_cut::collect_cut_edges(s_);               // rough_cut/checks.h
     });
-    timings.time("disk_check", [&] { check_disk(); });
-    return std::move(r_);
+    timings.time("disk_check", [&] { rough_cut::check_disk(s_); });
+    return std::move(s_.r);
   }
 
 private:
-  std::size_t vi(vertex_descriptor v) const { return static_cast<std::size_t>(get(maps_.vim, v)); }
-  std::size_t ei(edge_descriptor e) const { return static_cast<std::size_t>(get(maps_.eim, e)); }
-  std::size_t fi(face_descriptor f) const { return static_cast<std::size_t>(get(maps_.fim, f)); }
-  double significance(std::size_t d) const { return r_.significance[ei(r_.dual_edges[d])]; }
-  // the face of dual edge d other than f
-  std::size_t across(std::size_t d, std::size_t f) const
-  {
-    return dual_faces_of_[d][0] == f ? dual_faces_of_[d][1] : dual_faces_of_[d][0];
-  }
-  static constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
-  bool curvature_sums() const { return options_.leaf_curvature > 0 || options_.branch_curvature > 0; }
-
-  void count_elements()
-  {
-    r_.source = src_;
-    r_.tolerance = options_.tolerance;
-    st_.number_of_vertices = nv_;
-    st_.number_of_edges = ne_;
-    st_.number_of_faces = nf_;
-    st_.number_of_boundary_loops = boundary_loops();
-    const long chi = static_cast<long>(nv_) - static_cast<long>(ne_) + static_cast<long>(nf_);
-    st_.genus = static_cast<int>((2 - chi - static_cast<long>(st_.number_of_boundary_loops)) / 2);
-    edge_of_.resize(ne_);
-    for(edge_descriptor e : edges(tm_))
-    {
-      if(ei(e) >= ne_)
-        throw Invalid_mesh_error("mesh has removed elements (call collect_garbage() first)");
-      edge_of_[ei(e)] = e;
-    }
-    face_of_.resize(nf_);
-    for(face_descriptor f : faces(tm_))
-    {
-      if(fi(f) >= nf_)
-        throw Invalid_mesh_error("mesh has removed elements (call collect_garbage() first)");
-      face_of_[fi(f)] = f;
-    }
-    is_seed_.assign(nv_, 0);
-    for(const auto& s : src_.seeds) is_seed_[vi(s.first)] = 1;
-  }
-
-  // The number of loops of border edges; marks the border vertices.
-  std::size_t boundary_loops()
-  {
-    Union_find loops(nv_);
-    boundary_vertex_.assign(nv_, 0);
-    for(halfedge_descriptor h : halfedges(tm_))
-      if(is_border(h, tm_))
-      {
-        boundary_vertex_[vi(source(h, tm_))] = boundary_vertex_[vi(target(h, tm_))] = 1;
-        loops.unite(vi(source(h, tm_)), vi(target(h, tm_)));
-      }
-    std::size_t inside = 0;
-    for(std::size_t v = 0; v < nv_; ++v) inside += !boundary_vertex_[v];
-    return loops.number_of_sets() - inside;
-  }
-  bool has_boundary() const { return st_.number_of_boundary_loops > 0; }
-  bool on_boundary(vertex_descriptor v) const { return boundary_vertex_[vi(v)] != 0; }
-  // Gaussian curvature at v; 0 on the border, where the angle sum measures the
-  // turning of the border, not curvature
-  double curvature(vertex_descriptor v) const { return on_boundary(v) ? 0.0 : angles_->curvature(vi(v)); }
-
-  // Step 1: Boost's Dijkstra on the mesh graph, several seeds for a surface point.
-  void shortest_path_tree()
-  {
-    const double inf = std::numeric_limits<double>::infinity();
-    edge_graph_distances(tm_, maps_, src_.seeds, length_, r_.distance, r_.parent);
-    // A straight segment from the source is a geodesic (no edge path in R^3 is
-    // shorter), so seeds stay roots and a vertex source's neighbours hang from it,
-    // whatever ties the floating-point sums produced: the cut never touches the source.
-    for(const auto& s : src_.seeds)
-    {
-      r_.distance[vi(s.first)] = s.second;
-      r_.parent[vi(s.first)] = s.first;
-    }
-    if(src_.kind == Source::ON_VERTEX)
-      for(halfedge_descriptor h : CGAL::halfedges_around_target(src_.vertex, tm_))
-      {
-        const vertex_descriptor u = source(h, tm_);
-        r_.parent[vi(u)] = src_.vertex;
-        r_.distance[vi(u)] = length_[ei(edge(h, tm_))];
-      }
-    for(vertex_descriptor v : vertices(tm_))
-      if(!(r_.distance[vi(v)] < inf))
-        throw Invalid_mesh_error("vertex " + std::to_string(vi(v)) + " cannot be reached from the source");
-  }
-
-  // Step 1, with a geodesic field: every vertex hangs from the neighbour u of
-  // smaller field value that minimizes field(u) + |uv|, so the tree descends the
-  // true distance instead of Dijkstra's staircase paths, whose anisotropy on
-  // regular meshes makes significant dual branches far from the real ridge.
-  // Strictly decreasing values make it a tree; where a vertex has no lower
-  // neighbour it keeps its Dijkstra parent, and if that mix ever closed a
-  // cycle, the whole Dijkstra tree is kept.
-  void descend_field(const std::vector<double>& field)
-  {
-    std::vector<vertex_descriptor> dijkstra_parent = r_.parent;
-    for(vertex_descriptor v : vertices(tm_))
-    {
-      if(is_seed_[vi(v)]) continue;
-      if(src_.kind == Source::ON_VERTEX && r_.parent[vi(v)] == src_.vertex && v != src_.vertex)
-        continue; // the source's neighbours stay its children
-      double best = std::numeric_limits<double>::infinity();
-      for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_))
-      {
-        const vertex_descriptor u = source(h, tm_);
-        if(!(field[vi(u)] < field[vi(v)])) continue;
-        const double value = field[vi(u)] + length_[ei(edge(h, tm_))];
-        if(value < best) { best = value; r_.parent[vi(v)] = u; }
-      }
-    }
-    if(!parents_form_a_tree()) r_.parent = dijkstra_parent;
-    else
-      for(vertex_descriptor v : vertices(tm_)) r_.distance[vi(v)] = field[vi(v)];
-  }
-
-  // A tree iff every vertex reaches a root (a seed) through its parents.
-  bool parents_form_a_tree() const
-  {
-    std::vector<char> state(nv_, 0); // 0 unknown, 1 in progress, 2 reaches a root
-    std::vector<std::size_t> path;   // (reused: no heap block per vertex)
-    for(vertex_descriptor v : vertices(tm_))
-    {
-      path.clear();
-      std::size_t x = vi(v);
-      while(state[x] == 0 && !is_seed_[x])
-      {
-        state[x] = 1;
-        path.push_back(x);
-        x = vi(r_.parent[x]);
-      }
-      if(state[x] == 1) return false;
-      for(std::size_t y : path) state[y] = 2;
-      state[x] = 2;
-    }
-    return true;
-  }
-
-  // Step 2: every edge is in T, on a face holding the source, or crossed by T*.
-  void classify_edges()
-  {
-    std::vector<char> is_source_face(nf_, 0);
-    for(face_descriptor f : src_.faces) is_source_face[fi(f)] = 1;
-    r_.edge_role.assign(ne_, Edge_role::dual_pruned);
-    r_.significance.assign(ne_, std::numeric_limits<double>::quiet_NaN());
-    for(edge_descriptor e : edges(tm_))
-    {
-      const halfedge_descriptor h = halfedge(e, tm_);
-      const vertex_descriptor a = source(h, tm_), b = target(h, tm_);
-      const bool in_tree = (r_.parent[vi(a)] == b && a != b) || (r_.parent[vi(b)] == a && a != b);
-      if(in_tree)
-        r_.edge_role[ei(e)] = Edge_role::shortest_path_tree;
-      else if(touches_source_face(h, is_source_face) || touches_source_face(opposite(h, tm_), is_source_face))
-        r_.edge_role[ei(e)] = Edge_role::source_face;
-      else
-        r_.dual_edges.push_back(e);
-    }
-    st_.number_of_dual_edges = r_.dual_edges.size();
-    // T* has a node per face not holding the source, and one for the border
-    // (all its loops): a spanning tree plus 2g + b - 1 independent cycles
-    const long nodes = static_cast<long>(nf_ - src_.faces.size()) + (has_boundary() ? 1 : 0);
-    const long expected = nodes - 1 + 2 * st_.genus + (has_boundary() ? static_cast<long>(st_.number_of_boundary_loops) - 1 : 0);
-    if(static_cast<long>(r_.dual_edges.size()) != expected)
-      throw Algorithm_error("the dual of the shortest-path tree has " + std::to_string(r_.dual_edges.size()) +
-                            " edges, expected " + std::to_string(expected));
-  }
-
-  bool touches_source_face(halfedge_descriptor h, const std::vector<char>& is_source_face) const
-  {
-    return !is_border(h, tm_) && is_source_face[fi(face(h, tm_))];
-  }
-  // the node of T* of the face of h: the face's index, or the border node
-  std::size_t node_of(halfedge_descriptor h) const { return is_border(h, tm_) ? border_node() : fi(face(h, tm_)); }
-  std::size_t border_node() const { return nf_; }
-
-  void measure_face_areas()
-  {
-    area_.assign(nf_ + 1, 0.0); // (the border node has none)
-    r_.total_area = 0;
-    for(face_descriptor f : faces(tm_))
-    {
-      area_[fi(f)] = CGAL::Polygon_mesh_processing::face_area(f, tm_, CGAL::parameters::vertex_point_map(maps_.vpm));
-      r_.total_area += area_[fi(f)];
-    }
-    // The faces holding a surface-point source are no nodes of T*: the two sides
-    // of a dual edge share the rest of the area.
-    node_total_ = r_.total_area;
-    for(face_descriptor f : src_.faces) node_total_ -= area_[fi(f)];
-  }
-
-  // the faces of every dual edge, and the dual edges of every face (by position in dual_edges)
-  void build_dual_adjacency()
-  {
-    nd_ = r_.dual_edges.size();
-    dual_faces_of_.resize(nd_);
-    dual_of_face_.resize(nf_);
-    dual_degree_.assign(nf_ + 1, 0); // the border node's is never read
-    for(std::size_t d = 0; d < nd_; ++d)
-    {
-      const halfedge_descriptor h = halfedge(r_.dual_edges[d], tm_);
-      const std::size_t f1 = node_of(h), f2 = node_of(opposite(h, tm_));
-      dual_faces_of_[d] = {f1, f2};
-      for(std::size_t f : {f1, f2})
-        if(f != border_node()) dual_of_face_[f][dual_degree_[f]++] = d;
-    }
-  }
-
-  // Gaussian curvature (2π − angle sum) of every vertex, shared among its
-  // faces by angle (and its positive part): the peeling accumulates it per
-  // branch of T* like the area, for the false branches and the leaf curvature
-  // extension. The corner angles serve the leaves at corners too.
-  void share_curvature_among_faces()
-  {
-    if(!curvature_sums()) return;
-    if(options_.corner_angles) angles_ = options_.corner_angles;
-    else
-    {
-      own_angles_ = corner_angles(tm_, maps_.vpm, maps_.vim, maps_.fim);
-      angles_ = &own_angles_;
-    }
-    curvature_share_.assign(nf_ + 1, 0.0);
-    positive_share_.assign(nf_ + 1, 0.0);
-    for(face_descriptor f : faces(tm_))
-    {
-      halfedge_descriptor h = halfedge(f, tm_);
-      for(int k = 0; k < 3; ++k, h = next(h, tm_))
-      {
-        const std::size_t v = vi(source(h, tm_));
-        // the source is no leaf of its own cut locus
-        if(src_.kind == Source::ON_VERTEX && source(h, tm_) == src_.vertex) continue;
-        const double share = angles_->angle[fi(f)][k] / angles_->angle_sum[v];
-        curvature_share_[fi(f)] += curvature(source(h, tm_)) * share;
-        positive_share_[fi(f)] += std::max(0.0, curvature(source(h, tm_))) * share;
-      }
-    }
-  }
-
-  // Peel leaves of T* (O(F)): when a face becomes a leaf, its one remaining dual
-  // edge separates the faces accumulated in it from the rest. What is never
-  // peeled is the 2-core (the non-contractible cycles and the paths joining
-  // them); its edges get the total area. The border node is never peeled: with
-  // a border, T* is rooted there, and an edge's significance is the area of
-  // its side away from the border (the other side reaches the border, and a
-  // branch is no less significant for reaching it).
-  void peel_significance()
-  {
-    std::vector<double> branch_curvature(curvature_share_), branch_positive(positive_share_);
-    branch_curvature.resize(nf_ + 1, 0.0);
-    branch_positive.resize(nf_ + 1, 0.0);
-    subtree_curvature_.assign(curvature_sums() ? nd_ : 0, 0.0);
-    subtree_positive_.assign(curvature_sums() ? nd_ : 0, 0.0);
-    std::vector<double> accumulated(area_);
-    std::vector<unsigned char> degree(dual_degree_);
-    peeled_.assign(nd_, 0);
-    child_face_.assign(nd_, none);
-    peel_order_.reserve(nd_);
-    std::vector<std::size_t> queue;
-    for(std::size_t f = 0; f < nf_; ++f)
-      if(degree[f] == 1) queue.push_back(f);
-    for(std::size_t qi = 0; qi < queue.size(); ++qi)
-    {
-      const std::size_t f = queue[qi];
-      if(degree[f] != 1) continue;
-      std::size_t d = none;
-      for(unsigned char k = 0; k < dual_degree_[f]; ++k)
-        if(!peeled_[dual_of_face_[f][k]]) d = dual_of_face_[f][k];
-      peeled_[d] = 1;
-      child_face_[d] = f;
-      peel_order_.push_back(d);
-      const double side = accumulated[f];
-      r_.significance[ei(r_.dual_edges[d])] = has_boundary() ? side : (std::min)(side, node_total_ - side);
-      const std::size_t p = across(d, f);
-      accumulated[p] += side;
-      if(curvature_sums())
-      {
-        subtree_curvature_[d] = branch_curvature[f];
-        branch_curvature[p] += branch_curvature[f];
-        subtree_positive_[d] = branch_positive[f];
-        branch_positive[p] += branch_positive[f];
-      }
-      degree[f] = 0;
-      if(--degree[p] == 1 && p != border_node()) queue.push_back(p);
-    }
-    for(std::size_t d = 0; d < nd_; ++d)
-      if(!peeled_[d])
-      {
-        r_.significance[ei(r_.dual_edges[d])] = r_.total_area;
-        ++st_.number_of_core_dual_edges;
-      }
-  }
-
-  // Step 3: keep the dual edges of significance at least tolerance × area.
-  void prune_by_significance()
-  {
-    threshold_ = r_.tolerance * r_.total_area;
-    kept_.assign(nd_, 0);
-    extension_.assign(nd_, 0);
-    for(std::size_t d = 0; d < nd_; ++d)
-      if(significance(d) >= threshold_) { kept_[d] = 1; ++nkept_; }
-    if(nkept_ == 0 && nd_ > 0 && !has_boundary())
-    {
-      // Genus 0 with a tolerance close to 1/2: keep the most significant dual
-      // edge, so that K is one slit and the cut surface still a disk.
-      std::size_t best = 0;
-      for(std::size_t d = 1; d < nd_; ++d)
-        if(significance(d) > significance(best)) best = d;
-      kept_[best] = 1;
-      nkept_ = 1;
-      st_.fallback_single_rung = true;
-    }
-    kept_degree_.assign(nf_ + 1, 0);
-    for(std::size_t d = 0; d < nd_; ++d)
-      if(kept_[d])
-      {
-        ++kept_degree_[dual_faces_of_[d][0]];
-        ++kept_degree_[dual_faces_of_[d][1]];
-      }
-  }
-
-  // Branches that enclose no curvature are false (see parameters::branch_curvature):
-  // pruned back from their tips while the curvature beyond the tip's dual edge
-  // is below the minimum. The 2-core (genus) is never touched; one dual edge at
-  // least is kept.
-  void prune_false_branches()
-  {
-    false_branch_.assign(nd_, 0);
-    if(options_.branch_curvature > 0 && !st_.fallback_single_rung)
-    {
-      double total_curvature = 0, total_positive = 0;
-      for(double c : curvature_share_) total_curvature += c;
-      for(double c : positive_share_) total_positive += c;
-      // the curvature, and its positive part, on the side of d that encloses the
-      // two paths' meeting: the branch's side, or on genus 0 the side of less curvature
-      auto enclosed = [&](std::size_t d) {
-        const double c = subtree_curvature_[d];
-        if(st_.genus == 0 && !has_boundary() && total_curvature - c < c)
-          return std::make_pair(total_curvature - c, total_positive - subtree_positive_[d]);
-        return std::make_pair(c, subtree_positive_[d]);
-      };
-      std::vector<std::size_t> tips;
-      for(std::size_t f = 0; f < nf_; ++f) if(kept_degree_[f] == 1) tips.push_back(f);
-      while(!tips.empty() && (nkept_ > 1 || has_boundary())) // (with a border, K may be empty)
-      {
-        const std::size_t f = tips.back();
-        tips.pop_back();
-        if(kept_degree_[f] != 1) continue;
-        std::size_t d = none;
-        for(unsigned char k = 0; k < dual_degree_[f]; ++k)
-          if(kept_[dual_of_face_[f][k]]) d = dual_of_face_[f][k];
-        if(!peeled_[d]) continue;
-        // false: nearly no curvature enclosed, and no bump either (a bump with
-        // its saddle-shaped foot encloses little in total but splits fronts)
-        const auto [net, positive] = enclosed(d);
-        if(net >= options_.branch_curvature || positive >= 2 * options_.branch_curvature) continue;
-        kept_[d] = 0;
-        false_branch_[d] = 1;
-        --nkept_;
-        ++st_.number_of_curvature_pruned_dual_edges;
-        kept_degree_[f] = 0;
-        const std::size_t p = across(d, f);
-        if(--kept_degree_[p] == 1 && p != border_node()) tips.push_back(p);
-      }
-    }
-    for(std::size_t f = 0; f < nf_; ++f) st_.number_of_kept_dual_leaves += (kept_degree_[f] == 1);
-  }
-
-  // Extensions of the kept structure into pruned branches. The ridge shows only
-  // where K cuts: beyond K's end, the disk's copy of a face carries the smaller
-  // of the two fronts at its corners and dominates every other copy. The leaves
-  // of the cut locus of a polyhedral surface are vertices of positive curvature,
-  // so every pruned branch that holds at least `leaf_curvature` of Gaussian
-  // curvature is kept, outwards from the kept structure (paths to the curvature,
-  // branching only where two branches both hold enough). From the core outwards
-  // (reverse peeling order), so a branch's parent is decided first; with
-  // hysteresis: an added branch goes on into its child branch of most curvature
-  // while that holds a quarter of it, so that it reaches the vertex whose
-  // curvature its last faces share.
-  void extend_leaves_by_curvature()
-  {
-    auto parent_of = [&](std::size_t d) { return across(d, child_face_[d]); };
-    std::vector<std::size_t> best_child(nf_ + 1, none);
-    for(std::size_t d : peel_order_)
-    {
-      const std::size_t p = parent_of(d);
-      if(best_child[p] == none || subtree_curvature_[d] > subtree_curvature_[best_child[p]]) best_child[p] = d;
-    }
-    std::vector<char> inside(nf_ + 1, 0); // 1 kept (the border always), 2 reached by an extension
-    for(std::size_t f = 0; f < nf_; ++f) inside[f] = kept_degree_[f] > 0 ? 1 : 0;
-    inside[border_node()] = has_boundary() ? 1 : 0;
-    for(auto it = peel_order_.rbegin(); it != peel_order_.rend(); ++it)
-    {
-      const std::size_t d = *it;
-      const std::size_t p = parent_of(d);
-      if(kept_[d] || false_branch_[d] || !inside[p]) continue;
-      const bool goes_on =
-          inside[p] == 2 && best_child[p] == d && subtree_curvature_[d] >= tuning::rough_cut::extension_curvature_share * options_.leaf_curvature;
-      if(!goes_on && subtree_curvature_[d] < options_.leaf_curvature) continue;
-      extension_[d] = 1;
-      inside[child_face_[d]] = 2;
-    }
-  }
-
-  void record_dual_roles()
-  {
-    std::vector<unsigned char> degree_with_extension(kept_degree_);
-    degree_with_extension[border_node()] = 0; // (not a face: never a leaf)
-    for(std::size_t d = 0; d < nd_; ++d)
-      if(extension_[d])
-      {
-        ++degree_with_extension[dual_faces_of_[d][0]];
-        ++degree_with_extension[dual_faces_of_[d][1]];
-      }
-    for(std::size_t f = 0; f < nf_; ++f) st_.number_of_extended_dual_leaves += (degree_with_extension[f] == 1);
-    for(std::size_t d = 0; d < nd_; ++d)
-      if(false_branch_[d]) r_.edge_role[ei(r_.dual_edges[d])] = Edge_role::dual_false_branch;
-    for(std::size_t d = 0; d < nd_; ++d)
-      if(extension_[d])
-      {
-        r_.edge_role[ei(r_.dual_edges[d])] = Edge_role::dual_leaf_extension;
-        r_.leaf_extension_edges.push_back(r_.dual_edges[d]);
-        ++st_.number_of_leaf_extension_edges;
-      }
-    for(std::size_t d = 0; d < nd_; ++d)
-      if(kept_[d])
-      {
-        r_.edge_role[ei(r_.dual_edges[d])] = Edge_role::dual_kept;
-        r_.kept_dual_edges.push_back(r_.dual_edges[d]);
-      }
-    st_.number_of_kept_dual_edges = nkept_;
-  }
-
-  void add_cut(edge_descriptor e)
-  {
-    r_.is_cut_edge[ei(e)] = 1;
-    ++cut_degree_[vi(source(e, tm_))];
-    ++cut_degree_[vi(target(e, tm_))];
-  }
-  void remove_cut(edge_descriptor e)
-  {
-    r_.is_cut_edge[ei(e)] = 0;
-    --cut_degree_[vi(source(e, tm_))];
-    --cut_degree_[vi(target(e, tm_))];
-  }
-
-  // The rungs (mesh edges crossed by kept dual edges) reduced to a
-  // maximum-significance spanning tree (Kruskal).
-  void span_rungs()
-  {
-    for(std::size_t d = 0; d < nd_; ++d)
-      if((kept_[d] || extension_[d]) && !is_border(r_.dual_edges[d], tm_)) rungs_.push_back(d);
-    std::stable_sort(rungs_.begin(), rungs_.end(),
-                     [&](std::size_t a, std::size_t b) { return significance(a) > significance(b); });
-    r_.is_cut_edge.assign(ne_, 0);
-    cut_degree_.assign(nv_, 0);
-    // each border loop is one piece of K ∪ ∂M already: a rung path that joins
-    // two loops is no cycle, one that returns to its loop is
-    Union_find uf(nv_);
-    for(halfedge_descriptor h : halfedges(tm_))
-      if(is_border(h, tm_)) uf.unite(vi(source(h, tm_)), vi(target(h, tm_)));
-    for(std::size_t d : rungs_)
-    {
-      const edge_descriptor e = r_.dual_edges[d];
-      if(uf.unite(vi(source(e, tm_)), vi(target(e, tm_)))) add_cut(e);
-    }
-  }
-
-  // Genus g: add back the 2g rungs that close the non-contractible cycles. A
-  // rung may be added iff the faces stay connected across non-cut edges (its
-  // dual edge is no bridge), i.e. it closes no contractible cycle. The
-  // candidates that qualify form a cographic matroid, so greedy is optimal, and
-  // a connected cut surface with Euler characteristic 1 is a disk.
-  void close_handle_cycles()
-  {
-    if(st_.genus == 0) return;
-    const std::size_t wanted = static_cast<std::size_t>(2 * st_.genus);
-    face_mark_.assign(nf_, 0);
-    for(std::size_t d : rungs_)
-    {
-      if(st_.number_of_closing_rungs == wanted) break;
-      const edge_descriptor e = r_.dual_edges[d];
-      if(r_.is_cut_edge[ei(e)] || !faces_stay_connected_without(d)) continue;
-      add_cut(e);
-      ++st_.number_of_closing_rungs;
-    }
-    if(st_.number_of_closing_rungs != wanted)
-      throw Algorithm_error("found " + std::to_string(st_.number_of_closing_rungs) + " of the " +
-                            std::to_string(wanted) + " rungs closing the non-contractible cycles");
-  }
-
-  // Whether the two faces of dual edge d stay connected when K and d's edge are
-  // cut: an alternating BFS from both faces stops after O(smaller side) steps
-  // when the edge is a bridge.
-  bool faces_stay_connected_without(std::size_t d)
-  {
-    const edge_descriptor e = r_.dual_edges[d];
-    const std::size_t ma = ++stamp_, mb = ++stamp_;
-    std::deque<std::size_t> qa{dual_faces_of_[d][0]}, qb{dual_faces_of_[d][1]};
-    face_mark_[qa.front()] = ma;
-    face_mark_[qb.front()] = mb;
-    bool joined = false;
-    auto step = [&](std::deque<std::size_t>& q, std::size_t mine, std::size_t other) {
-      const std::size_t f = q.front();
-      q.pop_front();
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_of_[f], tm_), tm_))
-      {
-        const edge_descriptor eh = edge(h, tm_);
-        if(r_.is_cut_edge[ei(eh)] || eh == e || is_border(opposite(h, tm_), tm_)) continue;
-        const std::size_t g = fi(face(opposite(h, tm_), tm_));
-        if(face_mark_[g] == other) { joined = true; return; }
-        if(face_mark_[g] != mine) { face_mark_[g] = mine; q.push_back(g); }
-      }
-    };
-    while(!joined && !qa.empty() && !qb.empty())
-    {
-      step(qa, ma, mb);
-      if(!joined && !qb.empty()) step(qb, mb, ma);
-    }
-    return joined;
-  }
-
-  // No teeth: a spanning tree of the rungs keeps every zigzag tooth of the strip
-  // as a one-edge leaf. A leaf of K is a tooth unless its dual edge is the
-  // outermost cut rung of its branch of T* (nothing cut further out). Removing a
-  // leaf of K keeps K connected and the cut surface a disk.
-  void remove_teeth()
-  {
-    const std::vector<char> cut_beyond = cut_further_out();
-    std::vector<std::size_t> dual_index_of_edge(ne_, none);
-    for(std::size_t d = 0; d < nd_; ++d) dual_index_of_edge[ei(r_.dual_edges[d])] = d;
-    std::size_t cut_size = 0;
-    for(std::size_t i = 0; i < ne_; ++i) cut_size += r_.is_cut_edge[i];
-    std::vector<vertex_descriptor> leaves;
-    for(vertex_descriptor v : vertices(tm_))
-      if(is_leaf_of_cut(v)) leaves.push_back(v);
-    while(!leaves.empty() && (cut_size > 1 || has_boundary()))
-    {
-      const vertex_descriptor w = leaves.back();
-      leaves.pop_back();
-      if(!is_leaf_of_cut(w)) continue;
-      const halfedge_descriptor hw = cut_halfedge_into(w, GT::null_halfedge());
-      if(!cut_beyond[dual_index_of_edge[ei(edge(hw, tm_))]]) continue; // the end of a branch: keep it
-      remove_cut(edge(hw, tm_));
-      --cut_size;
-      const vertex_descriptor u = source(hw, tm_);
-      if(is_leaf_of_cut(u)) leaves.push_back(u);
-      ++st_.number_of_teeth_pruned;
-    }
-  }
-
-  // per dual edge: whether K cuts further out on its branch of T* (always on the 2-core)
-  std::vector<char> cut_further_out() const
-  {
-    std::vector<char> cut_beyond(nd_, 0), face_has_cut_beyond(nf_ + 1, 0);
-    for(std::size_t d : peel_order_)
-    {
-      const std::size_t c = child_face_[d];
-      cut_beyond[d] = face_has_cut_beyond[c];
-      if(cut_beyond[d] || r_.is_cut_edge[ei(r_.dual_edges[d])]) face_has_cut_beyond[across(d, c)] = 1;
-    }
-    for(std::size_t d = 0; d < nd_; ++d)
-      if(!peeled_[d]) cut_beyond[d] = 1; // a cycle of the 2-core never ends
-    return cut_beyond;
-  }
-
-  // a free end of K: one cut edge, and not on the border (which K ∪ ∂M goes on along)
-  bool is_leaf_of_cut(vertex_descriptor v) const { return cut_degree_[vi(v)] == 1 && !on_boundary(v); }
-
-  // a cut edge at v other than `not_this`, as a halfedge pointing into v
-  halfedge_descriptor cut_halfedge_into(vertex_descriptor v, halfedge_descriptor not_this) const
-  {
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, tm_))
-      if(r_.is_cut_edge[ei(edge(h, tm_))] &&
-         (not_this == GT::null_halfedge() || edge(h, tm_) != edge(not_this, tm_)))
-        return h;
-    return GT::null_halfedge();
-  }
-
-  // Leaves at corners. The cut locus ends at vertices of positive curvature
-  // (generically every such vertex is a leaf: one shortest path reaches it). A
-  // leaf of K one or two edges past a sharp corner, or a corner left off K (see
-  // `join_corners`), puts the slit's end beside the ridge's end; the fronts on
-  // both sides of the corner then come out wrong. So the leaf is moved back
-  // onto the corner. Measured (bench_ridge_accuracy): trimming at corners of 60
-  // degrees cut real branches through the 77-90 degree ear tips of bunny_1k
-  // (recall p95 at tolerance 0.001 0.27 -> 4.5 mean edges), hence the sharper
-  // threshold here.
-  static double corner_curvature() { return radians(tuning::rough_cut::corner_degrees); }
-  // (a doubly covered square's corners have 180 degrees)
-  static double sharp_corner_curvature() { return radians(tuning::rough_cut::sharp_corner_degrees); }
-
-  void move_leaves_onto_corners()
-  {
-    std::vector<vertex_descriptor> leaves;
-    for(vertex_descriptor v : vertices(tm_))
-      if(is_leaf_of_cut(v) && curvature(v) < corner_curvature()) leaves.push_back(v);
-    for(vertex_descriptor w : leaves)
-    {
-      // past a sharp corner: walk in through at most two vertices of degree 2
-      std::vector<halfedge_descriptor> path;
-      halfedge_descriptor h = cut_halfedge_into(w, GT::null_halfedge());
-      for(int step = 0; step < 2 && h != GT::null_halfedge(); ++step)
-      {
-        path.push_back(h);
-        const vertex_descriptor u = source(h, tm_);
-        // (u keeps a cut edge, so K never becomes empty)
-        if(curvature(u) >= sharp_corner_curvature() && !is_source_vertex(u) && cut_degree_[vi(u)] >= 2)
-        {
-          for(halfedge_descriptor p : path) remove_cut(edge(p, tm_));
-          ++st_.number_of_corner_moves;
-          break;
-        }
-        if(cut_degree_[vi(u)] != 2) break;
-        h = cut_halfedge_into(u, h); // the other cut edge at u, again pointing outwards
-      }
-    }
-  }
-
-  // Prongs at a corner where K forks. The dual edges kept around a corner for
-  // its curvature cross several of its spokes, and the rungs make K fork at
-  // the corner into one-edge prongs that end at flat vertices beside it (the
-  // open box's bottom corners: two prongs along the bottom edges). A front that
-  // crosses such a prong's edge is split between two sheets, and the faces at
-  // the corner get no copy that carries it at all three corners: the ridge
-  // forks beside the corner. The cut locus ends at vertices of positive
-  // curvature, never at a flat vertex one edge from a corner, so at a corner
-  // (60 degrees or more) where K has three or more edges, every such prong is
-  // removed while one other edge stays. A corner where K does not fork (a
-  // branch through it and one edge on, as at bunny_1k's ear tips) is left to
-  // `move_leaves_onto_corners()`.
-  void remove_prongs_at_corner_forks()
-  {
-    for(vertex_descriptor u : vertices(tm_))
-    {
-      if(cut_degree_[vi(u)] < 3 || curvature(u) < corner_curvature() || is_source_vertex(u)) continue;
-      std::vector<edge_descriptor> prongs;
-      for(halfedge_descriptor h : CGAL::halfedges_around_target(u, tm_))
-      {
-        const vertex_descriptor w = source(h, tm_);
-        if(r_.is_cut_edge[ei(edge(h, tm_))] && is_leaf_of_cut(w) && curvature(w) < corner_curvature() &&
-           !is_source_vertex(w))
-          prongs.push_back(edge(h, tm_));
-      }
-      if(prongs.empty()) continue;
-      if(prongs.size() == cut_degree_[vi(u)]) prongs.pop_back(); // (K keeps an edge at u)
-      for(edge_descriptor e : prongs) remove_cut(e);
-      ++st_.number_of_corner_moves;
-    }
-  }
-
-  bool is_source_vertex(vertex_descriptor v) const
-  {
-    return is_seed_[vi(v)] || (src_.kind == Source::ON_VERTEX && v == src_.vertex);
-  }
-
-  // A corner (60 degrees or more of curvature) off K is joined to K by the
-  // shortest path of at most three edges through vertices off K (a pendant
-  // path: K stays a tree plus its 2g rungs); corners of most curvature first.
-  void join_corners()
-  {
-    std::vector<vertex_descriptor> corners;
-    for(vertex_descriptor v : vertices(tm_))
-      if(cut_degree_[vi(v)] == 0 && !is_source_vertex(v) && curvature(v) >= corner_curvature())
-        corners.push_back(v);
-    std::stable_sort(corners.begin(), corners.end(), [&](vertex_descriptor a, vertex_descriptor b) {
-      return curvature(a) > curvature(b);
-    });
-    Short_path_search search(*this);
-    for(vertex_descriptor c : corners)
-    {
-      if(cut_degree_[vi(c)] != 0) continue;
-      const std::vector<halfedge_descriptor> path = search(c);
-      if(path.empty()) continue;
-      for(halfedge_descriptor h : path)
-      {
-        add_cut(edge(h, tm_));
-        r_.corner_path_edges.push_back(edge(h, tm_));
-      }
-      ++st_.number_of_corner_moves;
-    }
-  }
-
-  // Dijkstra from a corner over at most `maximum_hops` edges, avoiding the
-  // source, to the nearest vertex of K; the path as halfedges from K back
-  // towards the corner (empty if K is farther). Its tables are reset per search
-  // only where a search touched them.
-  struct Short_path_search
-  {
-    static constexpr int maximum_hops = 3;
-    const Rough_cut_locus_builder& b;
-    std::vector<vertex_descriptor> vertex_of;
-    std::vector<double> reach;
-    std::vector<int> hops;
-    std::vector<halfedge_descriptor> reached_by;
-    std::vector<std::size_t> touched;
-
-    explicit Short_path_search(const Rough_cut_locus_builder& builder)
-      : b(builder), vertex_of(builder.nv_), reach(builder.nv_, std::numeric_limits<double>::infinity()),
-        hops(builder.nv_, 0), reached_by(builder.nv_, GT::null_halfedge())
-    {
-      for(vertex_descriptor v : vertices(b.tm_)) vertex_of[b.vi(v)] = v;
-    }
-
-    std::vector<halfedge_descriptor> operator()(vertex_descriptor c)
-    {
-      for(std::size_t t : touched) { reach[t] = std::numeric_limits<double>::infinity(); reached_by[t] = GT::null_halfedge(); }
-      touched.clear();
-      typedef std::pair<double, std::size_t> Entry;
-      std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > queue;
-      reach[b.vi(c)] = 0; hops[b.vi(c)] = 0; touched.push_back(b.vi(c));
-      queue.emplace(0.0, b.vi(c));
-      vertex_descriptor found = GT::null_vertex();
-      while(!queue.empty() && found == GT::null_vertex())
-      {
-        const double d = queue.top().first;
-        const vertex_descriptor u = vertex_of[queue.top().second];
-        queue.pop();
-        if(d > reach[b.vi(u)]) continue;
-        if(b.cut_degree_[b.vi(u)] > 0 || b.on_boundary(u)) { found = u; break; }
-        if(hops[b.vi(u)] == maximum_hops) continue;
-        for(halfedge_descriptor h : CGAL::halfedges_around_target(u, b.tm_))
-        {
-          const vertex_descriptor w = source(h, b.tm_);
-          if(b.is_seed_[b.vi(w)]) continue;
-          const double dw = d + distance_between(b.maps_.vpm, u, w);
-          if(dw >= reach[b.vi(w)]) continue;
-          if(reach[b.vi(w)] == std::numeric_limits<double>::infinity()) touched.push_back(b.vi(w));
-          reach[b.vi(w)] = dw; hops[b.vi(w)] = hops[b.vi(u)] + 1; reached_by[b.vi(w)] = h;
-          queue.emplace(dw, b.vi(w));
-        }
-      }
-      std::vector<halfedge_descriptor> path;
-      if(found == GT::null_vertex()) return path;
-      for(vertex_descriptor u = found; u != c; u = target(path.back(), b.tm_))
-        path.push_back(reached_by[b.vi(u)]); // from u back towards c
-      return path;
-    }
-  };
-
-  void collect_cut_edges()
-  {
-    for(std::size_t i = 0; i < ne_; ++i)
-      if(r_.is_cut_edge[i]) r_.cut_edges.push_back(edge_of_[i]);
-    auto by_index = [&](edge_descriptor a, edge_descriptor b) { return ei(a) < ei(b); };
-    std::sort(r_.dual_edges.begin(), r_.dual_edges.end(), by_index);
-    std::sort(r_.kept_dual_edges.begin(), r_.kept_dual_edges.end(), by_index);
-    std::sort(r_.leaf_extension_edges.begin(), r_.leaf_extension_edges.end(), by_index);
-    std::sort(r_.corner_path_edges.begin(), r_.corner_path_edges.end(), by_index);
-    st_.number_of_cut_edges = r_.cut_edges.size();
-  }
-
-  // Step 4, always: K ∪ ∂M (K on a closed mesh) is connected with cycle rank
-  // 2g + b, the cut surface is connected with Euler characteristic 1 (so a
-  // disk), the source is off K.
-  void check_disk()
-  {
-    std::size_t split_vertices = 0; // vertex copies in the cut surface beyond one per vertex
-    std::size_t graph_vertices = 0, graph_edges = st_.number_of_cut_edges;
-    for(vertex_descriptor v : vertices(tm_))
-    {
-      const std::size_t k = cut_degree_[vi(v)];
-      if(k > 0) ++st_.number_of_cut_vertices;
-      if(is_leaf_of_cut(v)) ++st_.number_of_cut_leaves;
-      // k cut edges split an inner vertex into k sectors, a border vertex into k + 1
-      split_vertices += on_boundary(v) ? k : (k > 0 ? k - 1 : 0);
-      graph_vertices += (k > 0 || on_boundary(v));
-    }
-    Union_find kuf(nv_);
-    for(edge_descriptor e : r_.cut_edges) kuf.unite(vi(source(e, tm_)), vi(target(e, tm_)));
-    for(halfedge_descriptor h : halfedges(tm_))
-      if(is_border(h, tm_)) { kuf.unite(vi(source(h, tm_)), vi(target(h, tm_))); ++graph_edges; }
-    const std::size_t k_components = kuf.number_of_sets() - (nv_ - graph_vertices);
-    st_.cut_cycle_rank = graph_edges + k_components - graph_vertices;
-    Union_find fuf(nf_);
-    for(edge_descriptor e : edges(tm_))
-      if(!r_.is_cut_edge[ei(e)] && !is_border(e, tm_))
-      {
-        const halfedge_descriptor h = halfedge(e, tm_);
-        fuf.unite(fi(face(h, tm_)), fi(face(opposite(h, tm_), tm_)));
-      }
-    const long cut_chi = static_cast<long>(nv_ + split_vertices) -
-                         static_cast<long>(ne_ + st_.number_of_cut_edges) + static_cast<long>(nf_);
-    const std::size_t rank = static_cast<std::size_t>(2 * st_.genus) + st_.number_of_boundary_loops;
-    const std::string graph = has_boundary() ? "K with the border" : "the cut graph";
-    std::string why;
-    if(graph_edges == 0) why = "the cut graph is empty";
-    else if(k_components != 1) why = graph + " has " + std::to_string(k_components) + " components";
-    else if(st_.cut_cycle_rank != rank)
-      why = graph + " has cycle rank " + std::to_string(st_.cut_cycle_rank) + ", not 2g + b = " + std::to_string(rank);
-    else if(fuf.number_of_sets() != 1)
-      why = "cutting along K splits the surface into " + std::to_string(fuf.number_of_sets()) + " parts";
-    else if(cut_chi != 1)
-      why = "the cut surface has Euler characteristic " + std::to_string(cut_chi) + ", not 1";
-    else if(source_on_cut())
-      why = "the source lies on the cut";
-    if(!why.empty()) throw Algorithm_error("rough cut locus: cutting along K does not give a disk: " + why);
-  }
-
-  bool source_on_cut() const
-  {
-    if(src_.kind == Source::ON_VERTEX) return cut_degree_[vi(src_.vertex)] > 0;
-    if(src_.kind == Source::ON_EDGE) return r_.is_cut_edge[ei(edge(src_.edge_halfedge, tm_))] != 0;
-    return false;
-  }
-
-  // the input
-  const TriangleMesh& tm_;
-  const Source src_;
-  const Maps maps_;
-  const Options options_;
-  const std::size_t nv_, ne_, nf_;
-  // the result, filled step by step
-  Rough_cut_locus<TriangleMesh> r_;
-  Rough_cut_locus_statistics& st_;
-  // elements by index; per vertex: a seed of the source, on the border
-  std::vector<edge_descriptor> edge_of_;
-  std::vector<face_descriptor> face_of_;
-  std::vector<char> is_seed_, boundary_vertex_;
-  // step 1: edge lengths; step 2: areas, the dual graph (by position d in
-  // r_.dual_edges), curvature, and the peeling: per dual edge its child face
-  // (the side peeled first) and the curvature beyond it
-  std::vector<double> length_, area_;
-  double node_total_ = 0;
-  std::size_t nd_ = 0;
-  std::vector<std::array<std::size_t, 2> > dual_faces_of_;
-  std::vector<std::array<std::size_t, 3> > dual_of_face_;
-  std::vector<unsigned char> dual_degree_;
-  Corner_angles own_angles_;
-  const Corner_angles* angles_ = nullptr;
-  std::vector<double> curvature_share_, positive_share_, subtree_curvature_, subtree_positive_;
-  std::vector<char> peeled_;
-  std::vector<std::size_t> child_face_, peel_order_;
-  // step 3: the kept dual structure and its extensions; K and its vertex degrees
-  double threshold_ = 0;
-  std::vector<char> kept_, false_branch_, extension_;
-  std::size_t nkept_ = 0;
-  std::vector<unsigned char> kept_degree_;
-  std::vector<std::size_t> rungs_, cut_degree_;
-  std::vector<std::size_t> face_mark_;
-  std::size_t stamp_ = 0;
+  State s_;
 };
 
 // What every entry point does first: the parameters of stage 1 checked (a bad

@@ -14,9 +14,9 @@ namespace Geodesic_ridge {
 namespace internal {
 namespace tuning {
 
-// Stage 1: the rough cut locus (rough_cut_locus.h). Angles in degrees.
+// Stage 1: the rough cut locus (rough_cut_locus.h, internal/rough_cut/). Angles in degrees.
 namespace rough_cut {
-/// A pruned branch is kept towards curvature (`mark_extensions`) through the
+/// A pruned branch is kept towards curvature (`extend_leaves_by_curvature`) through the
 /// best child of a node on the way when its subtree holds this share of
 /// `leaf_curvature`.
 constexpr double extension_curvature_share = 0.25;
