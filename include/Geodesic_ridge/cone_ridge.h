@@ -32,6 +32,7 @@
 #define GEODESIC_RIDGE_CONE_RIDGE_H
 
 #include <Geodesic_ridge/internal/coincident_points.h>
+#include <Geodesic_ridge/internal/cone_agreement.h>
 #include <Geodesic_ridge/internal/face_cone_field.h>
 #include <Geodesic_ridge/internal/faces_by_index.h>
 #include <Geodesic_ridge/internal/union_find.h>
@@ -92,7 +93,7 @@ public:
                     const std::vector<std::vector<Face_cone> >& cones,
                     const std::vector<std::array<double, 3> >& samples, double tolerance, double mean_edge)
       : tm_(tm), fim_(fim), faces_(tm, vpm, fim), cones_(cones), samples_(samples), tolerance_(tolerance),
-        mean_edge_(mean_edge)
+        mean_edge_(mean_edge), agree_(mean_edge)
   {}
 
   std::vector<std::vector<Ridge_point<Point> > > trace(std::vector<std::vector<Ridge_point<Point> > > linear,
@@ -258,37 +259,6 @@ private:
   // the number of zero barycentric coordinates (1: on an edge, 2: at a vertex)
   static int zeros(const Bary& b) { return int(b[0] == 0) + int(b[1] == 0) + int(b[2] == 0); }
 
-  // Root of value(a) - value(b) on x(s) = x0 + s d, s in [lo, hi], where a is
-  // lowest at lo and b at hi; false if the sides do not give two copies or a
-  // third copy is lower at the root.
-  bool bisect(const Face_cone_field& field, const Point_2& x0, const Vector_2& d, double lo, double hi,
-              Point_2& root) const
-  {
-    auto at = [&](double s) { return x0 + s * d; };
-    const std::size_t a = field.lowest(at(lo)).first, b = field.lowest(at(hi)).first;
-    if(a == b) return false;
-    auto g = [&](double s) { return field.value(a, at(s)) - field.value(b, at(s)); };
-    if(!(g(lo) < 0 && g(hi) > 0)) return false;
-    for(int it = 0; it < 200 && hi - lo > 1e-15 * (std::abs(lo) + std::abs(hi) + mean_edge_); ++it)
-    {
-      const double mid = 0.5 * (lo + hi);
-      (g(mid) < 0 ? lo : hi) = mid;
-    }
-    root = at(0.5 * (lo + hi));
-    const auto best = field.lowest(root);
-    const double va = field.value(a, root);
-    return best.first == a || best.first == b || best.second >= va - 1e-12 * (va + mean_edge_);
-  }
-
-  // the largest s >= 0 with b + s w inside the face (times `margin`)
-  static double room(const Bary& b, const Bary& w, double margin)
-  {
-    double s = std::numeric_limits<double>::infinity();
-    for(int k = 0; k < 3; ++k)
-      if(w[k] < 0) s = (std::min)(s, -b[k] / w[k]);
-    return margin * s;
-  }
-
   Ridge_point<Point> move_interior(const Ridge_point<Point>& p, const Point& prev, const Point& next,
                                    Cone_ridge_statistics& st) const
   {
@@ -316,17 +286,17 @@ private:
     for(int k = 0; k < 3; ++k)
       if(p.barycentric[k] == 0) w[k] = 0; // along its edge
     const Bary minus_w = {{-w[0], -w[1], -w[2]}};
-    const double hi = (std::min)(reach, room(p.barycentric, w, 0.999)),
-                 lo = -(std::min)(reach, room(p.barycentric, minus_w, 0.999));
+    const double hi = (std::min)(reach, Cone_agreement::room(p.barycentric, w, 0.999)),
+                 lo = -(std::min)(reach, Cone_agreement::room(p.barycentric, minus_w, 0.999));
     Point_2 root;
-    bool found = hi > 0 && lo < 0 && bisect(field, x0, d, lo, hi, root);
+    bool found = hi > 0 && lo < 0 && agree_.bisect(field, x0, d, lo, hi, root);
     if(!found)
     {
       // the cones' curve lies farther than the linear ridge's neighbours: look
       // up to half an edge away
       const double far = 0.5 * mean_edge_;
-      found = bisect(field, x0, d, -(std::min)(far, room(p.barycentric, minus_w, 0.999)),
-                     (std::min)(far, room(p.barycentric, w, 0.999)), root);
+      found = agree_.bisect(field, x0, d, -(std::min)(far, Cone_agreement::room(p.barycentric, minus_w, 0.999)),
+                     (std::min)(far, Cone_agreement::room(p.barycentric, w, 0.999)), root);
     }
     if(!found) { ++st.points_kept; return p; }
     Bary b = plane.barycentric(root);
@@ -364,11 +334,11 @@ private:
     const Face_plane& plane = field.plane();
     const Point_2 start = plane.point(p.barycentric);
     const double r = 0.25 * std::sqrt(CGAL::to_double(CGAL::squared_distance(p.point, neighbour)));
-    const std::set<std::size_t> around = copies_around(field, start, r);
+    const std::set<std::size_t> around = Cone_agreement::copies_around(field, start, r);
     if(around.size() != 3) { ++st.points_kept; return p; }
     const std::vector<std::size_t> c(around.begin(), around.end());
     Point_2 x = start;
-    const bool converged = where_three_cones_agree(field, c, x);
+    const bool converged = agree_.where_three_cones_agree(field, c, x);
     const Bary b = plane.barycentric(x);
     const bool inside = b[0] > 0 && b[1] > 0 && b[2] > 0;
     const double moved = std::sqrt(CGAL::squared_distance(x, start));
@@ -384,50 +354,6 @@ private:
     count_move(p, q, st);
     ++st.junctions_moved;
     return q;
-  }
-
-  // The copies lowest on circles around x, from radius r down to r/256 (the
-  // cones' junction may lie just beside the linear one).
-  static std::set<std::size_t> copies_around(const Face_cone_field& field, const Point_2& x, double r)
-  {
-    std::set<std::size_t> around;
-    const int directions = 24;
-    for(double radius = r; radius >= r / 256; radius /= 4)
-      for(int k = 0; k < directions; ++k)
-      {
-        const double phi = 2 * CGAL_PI * k / directions;
-        around.insert(field.lowest(x + radius * Vector_2(std::cos(phi), std::sin(phi))).first);
-      }
-    return around;
-  }
-
-  // Newton on (v_a - v_b, v_a - v_c) = 0 from x for the copies c; the gradient
-  // of a cone is the unit vector from its apex. Whether it converged.
-  bool where_three_cones_agree(const Face_cone_field& field, const std::vector<std::size_t>& c, Point_2& x) const
-  {
-    for(int it = 0; it < 50; ++it)
-    {
-      std::array<Vector_2, 3> u;
-      std::array<double, 3> v;
-      for(int j = 0; j < 3; ++j)
-      {
-        const Vector_2 from_apex = x - field.apex(c[j], x);
-        const double len = std::sqrt(from_apex.squared_length());
-        if(!(len > 0)) return false;
-        u[j] = from_apex / len;
-        v[j] = field.value(c[j], x);
-      }
-      // the Jacobian's rows and the Newton step (Cramer's rule)
-      const Vector_2 r0 = u[0] - u[1], r1 = u[0] - u[2];
-      const double f0 = v[0] - v[1], f1 = v[0] - v[2];
-      const double det = CGAL::determinant(r0, r1);
-      if(!(std::abs(det) > 1e-12)) return false;
-      const Vector_2 step((r1.y() * f0 - r0.y() * f1) / det, (-r1.x() * f0 + r0.x() * f1) / det);
-      x = x - step;
-      if(std::sqrt(step.squared_length()) <= 1e-14 * (mean_edge_ + std::sqrt((x - CGAL::ORIGIN).squared_length())))
-        return true;
-    }
-    return false;
   }
 
   // The faces that hold a point: its face, the face across its edge, or the
@@ -496,10 +422,10 @@ private:
     const Bary bm = {{0.5 * (ba[0] + bb[0]), 0.5 * (ba[1] + bb[1]), 0.5 * (ba[2] + bb[2])}};
     const Bary w = plane.barycentric(d);
     const Bary minus_w = {{-w[0], -w[1], -w[2]}};
-    const double hi = (std::min)(0.5 * len, room(bm, w, 0.999)), lo = -(std::min)(0.5 * len, room(bm, minus_w, 0.999));
+    const double hi = (std::min)(0.5 * len, Cone_agreement::room(bm, w, 0.999)), lo = -(std::min)(0.5 * len, Cone_agreement::room(bm, minus_w, 0.999));
     Point_2 root;
     if(!(hi > 0 && lo < 0)) return;
-    if(!bisect(field, m, d, lo, hi, root)) return;
+    if(!agree_.bisect(field, m, d, lo, hi, root)) return;
     if(CGAL::squared_distance(root, m) <= tolerance_ * tolerance_) return;
     const Bary br = plane.barycentric(root);
     split(field, f, like, ba, br, out, st, depth + 1);
@@ -515,6 +441,7 @@ private:
   const std::vector<std::vector<Face_cone> >& cones_;
   const std::vector<std::array<double, 3> >& samples_;
   double tolerance_, mean_edge_;
+  Cone_agreement agree_;
 };
 
 // The components and independent cycles of the graph of `polylines` with the
