@@ -31,6 +31,7 @@
 #ifndef GEODESIC_RIDGE_CONE_RIDGE_H
 #define GEODESIC_RIDGE_CONE_RIDGE_H
 
+#include <Geodesic_ridge/internal/border_loops.h>
 #include <Geodesic_ridge/internal/coincident_points.h>
 #include <Geodesic_ridge/internal/cone_agreement.h>
 #include <Geodesic_ridge/internal/face_cone_field.h>
@@ -454,16 +455,8 @@ std::pair<std::size_t, std::size_t> ridge_graph_with_border(const TriangleMesh& 
                                                             const std::vector<std::vector<Ridge_point<Point> > >& polylines)
 {
   const Faces_by_index<TriangleMesh, VertexPointMap> faces(tm, vpm, fim);
-  Union_find loops(num_vertices(tm)); // the border vertices, joined along each loop
-  std::vector<char> on_border(num_vertices(tm), 0);
-  for(auto h : halfedges(tm))
-    if(is_border(h, tm))
-    {
-      const std::size_t a = get(vim, source(h, tm)), b = get(vim, target(h, tm));
-      on_border[a] = on_border[b] = 1;
-      loops.unite(a, b);
-    }
-  // nodes: the loops' roots (by vertex index), then the ridge points
+  const Border_loops loops = border_loops(tm, vim);
+  // nodes: the loops (their numbers), then the ridge points
   Coincident_points id(coincident_tolerance(tm, vpm));
   std::size_t points = 0;
   const std::size_t first_point = num_vertices(tm);
@@ -479,10 +472,10 @@ std::pair<std::size_t, std::size_t> ridge_graph_with_border(const TriangleMesh& 
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t v = get(vim, source(h[k], tm));
-      if((p.barycentric[k] == 1 && on_border[v]) ||
+      if((p.barycentric[k] == 1 && loops.on_border(v)) ||
          (p.barycentric[(k + 2) % 3] == 0 && is_border(opposite(h[k], tm), tm)))
       {
-        border_links.emplace(n, loops.find(v));
+        border_links.emplace(n, loops.loop_of_vertex[v]);
         break;
       }
     }

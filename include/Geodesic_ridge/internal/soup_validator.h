@@ -128,6 +128,44 @@ Epick_point_3 to_epick(const Point_3& p)
   throw Invalid_mesh_error(message.str());
 }
 
+// in the link of vertex `owner`, the link vertex after this one
+struct Link_step { std::size_t owner, to; };
+
+// The fans of vertex v (corners [first, last)): the components of its link.
+// Each corner (v; a, b) of a face gives the link edge a -> b; the mesh being
+// oriented and edge-manifold, each link vertex has at most one successor.
+// Paths start at a link vertex with no predecessor (at the border); cycles
+// are the rest. `next`, `visited` and `has_predecessor` are stamped with v.
+// (`tri`: face f is tri[3f], tri[3f + 1], tri[3f + 2].)
+template <class Iterator>
+std::size_t count_link_fans(const std::vector<std::size_t>& tri, std::size_t v, Iterator first, Iterator last,
+                          std::vector<Link_step>& next, std::vector<std::size_t>& visited,
+                          std::vector<std::size_t>& has_predecessor)
+{
+  auto first_of = [&tri](std::size_t c) { return tri[3 * (c / 3) + (c % 3 + 1) % 3]; };
+  for(Iterator it = first; it != last; ++it)
+  {
+    const std::size_t c = *it, f = c / 3, k = c % 3;
+    const std::size_t a = tri[3 * f + (k + 1) % 3], b = tri[3 * f + (k + 2) % 3];
+    next[a] = {v, b};
+    has_predecessor[b] = v;
+  }
+  auto walk = [&](std::size_t x) {
+    while(visited[x] != v)
+    {
+      visited[x] = v;
+      if(next[x].owner != v) return; // the end of a path
+      x = next[x].to;
+    }
+  };
+  std::size_t fans = 0;
+  for(Iterator it = first; it != last; ++it) // paths first: from their starts
+    if(has_predecessor[first_of(*it)] != v && visited[first_of(*it)] != v) { ++fans; walk(first_of(*it)); }
+  for(Iterator it = first; it != last; ++it) // then cycles
+    if(visited[first_of(*it)] != v) { ++fans; walk(first_of(*it)); }
+  return fans;
+}
+
 // The rules of `validate_triangle_soup()`, one member function each, run in
 // the documented order by `run()`: the first failing rule throws. Messages
 // name vertex v and face f as `file_vertex(v)` and `file_face(f)`: the soup's
@@ -185,8 +223,6 @@ public:
 private:
   // The first offending halfedge of each edge rule (invalid_index: none) and
   // what its message needs.
-  // in the link of vertex `owner`, the link vertex after this one
-  struct Link_step { std::size_t owner, to; };
 
   struct Edge_problems
   {
@@ -446,39 +482,6 @@ private:
     }
   }
 
-  // The fans of vertex v (corners [first, last)): the components of its link.
-  // Each corner (v; a, b) of a face gives the link edge a -> b; the mesh being
-  // oriented and edge-manifold, each link vertex has at most one successor.
-  // Paths start at a link vertex with no predecessor (at the border); cycles
-  // are the rest. `next`, `visited` and `has_predecessor` are stamped with v.
-  template <class Iterator>
-  std::size_t count_link_fans(std::size_t v, Iterator first, Iterator last, std::vector<Link_step>& next,
-                              std::vector<std::size_t>& visited, std::vector<std::size_t>& has_predecessor) const
-  {
-    auto first_of = [this](std::size_t c) { return tri_[3 * (c / 3) + (c % 3 + 1) % 3]; };
-    for(Iterator it = first; it != last; ++it)
-    {
-      const std::size_t c = *it, f = c / 3, k = c % 3;
-      const std::size_t a = tri_[3 * f + (k + 1) % 3], b = tri_[3 * f + (k + 2) % 3];
-      next[a] = {v, b};
-      has_predecessor[b] = v;
-    }
-    auto walk = [&](std::size_t x) {
-      while(visited[x] != v)
-      {
-        visited[x] = v;
-        if(next[x].owner != v) return; // the end of a path
-        x = next[x].to;
-      }
-    };
-    std::size_t fans = 0;
-    for(Iterator it = first; it != last; ++it) // paths first: from their starts
-      if(has_predecessor[first_of(*it)] != v && visited[first_of(*it)] != v) { ++fans; walk(first_of(*it)); }
-    for(Iterator it = first; it != last; ++it) // then cycles
-      if(visited[first_of(*it)] != v) { ++fans; walk(first_of(*it)); }
-    return fans;
-  }
-
   // A vertex is manifold iff its link is one cycle (inside) or one path (on
   // the border).
   void check_manifold_vertices() const
@@ -490,7 +493,7 @@ private:
     std::vector<std::size_t> visited(nv_, invalid_index), has_predecessor(nv_, invalid_index);
     for(std::size_t v = 0; v < nv_; ++v)
     {
-      const std::size_t fans = count_link_fans(v, corners.begin() + begin[v], corners.begin() + begin[v + 1], next,
+      const std::size_t fans = count_link_fans(tri_, v, corners.begin() + begin[v], corners.begin() + begin[v + 1], next,
                                                visited, has_predecessor);
       if(fans > 1)
       {

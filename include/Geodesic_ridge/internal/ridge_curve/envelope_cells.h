@@ -3,6 +3,7 @@
 //
 // Stage 3, first pass: the exact lower envelope of every face's copies
 // (`compute_lower_envelope`, exact rationals) and its cells.
+// Test: test_ridge_passes.cpp, "envelope_cells and segments_inside_faces: ...".
 #ifndef GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_ENVELOPE_CELLS_H
 #define GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_ENVELOPE_CELLS_H
 

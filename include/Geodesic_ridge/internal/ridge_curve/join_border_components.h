@@ -3,6 +3,8 @@
 //
 // Stage 3 pass: with several border loops, the pieces of the ridge that hang
 // from different loops joined into one.
+// Test: test_ridge_curve.cpp, "surfaces with several border loops: the pieces
+// hanging from different loops are joined".
 #ifndef GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_JOIN_BORDER_COMPONENTS_H
 #define GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_JOIN_BORDER_COMPONENTS_H
 

@@ -3,6 +3,8 @@
 //
 // Stage 3 pass: a detached piece of the ridge that holds a verified kink
 // (two fronts of one split copy) is a real branch: joined to the main piece.
+// Test: test_ridge_accuracy.cpp, "detached pieces with a verified kink: the
+// major ridge at a small tolerance".
 #ifndef GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_JOIN_VERIFIED_PIECES_H
 #define GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_JOIN_VERIFIED_PIECES_H
 

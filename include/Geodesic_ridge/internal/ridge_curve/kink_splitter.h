@@ -3,6 +3,8 @@
 //
 // Stage 3 pass (before the envelopes, with the solver's cones): copies split
 // at a kink between the fronts of their corners.
+// Test: test_ridge_curve.cpp, "a copy is split at a kink between its corners'
+// fronts"; test_ridge_accuracy.cpp, "kinks inside one sheet: ...".
 #ifndef GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_KINK_SPLITTER_H
 #define GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_KINK_SPLITTER_H
 

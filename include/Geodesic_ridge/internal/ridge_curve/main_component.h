@@ -3,6 +3,8 @@
 //
 // Stage 3, last passes: the main component kept, its topology counted, and
 // its chains written as polylines.
+// Test: test_ridge_passes.cpp, "keep_main_component, count_topology and
+// chains_as_polylines on a closed surface".
 #ifndef GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_MAIN_COMPONENT_H
 #define GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_MAIN_COMPONENT_H
 

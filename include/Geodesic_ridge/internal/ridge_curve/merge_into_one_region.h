@@ -4,6 +4,8 @@
 // Stage 3 pass: one region. The regions of M minus the raw ridge are merged,
 // weakest ridge segment first, until one is left (no cycle but the 2g + b the
 // topology needs).
+// Test: test_ridge_passes.cpp, "merge_into_one_region removes the weakest
+// segment ...".
 #ifndef GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_MERGE_INTO_ONE_REGION_H
 #define GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_MERGE_INTO_ONE_REGION_H
 

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 3 pass: free ends that are no ends of a cut locus pruned, repeatedly.
+// Test: test_ridge_passes.cpp, the three "prune_spurs: ..." cases (each rule,
+// on and off).
 #ifndef GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_PRUNE_SPURS_H
 #define GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_PRUNE_SPURS_H
 

@@ -3,6 +3,7 @@
 //
 // Stage 3 pass: merged segments put back, strongest first, where the merge
 // cut a branch off (joining two pieces closes no cycle).
+// Test: test_ridge_passes.cpp, "... rejoin_pieces puts back a link".
 #ifndef GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_REJOIN_PIECES_H
 #define GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_REJOIN_PIECES_H
 

@@ -7,6 +7,7 @@
 #define GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_RIDGE_GRAPH_H
 
 #include <Geodesic_ridge/extended_surface.h>
+#include <Geodesic_ridge/internal/border_loops.h>
 #include <Geodesic_ridge/internal/coincident_points.h>
 #include <Geodesic_ridge/internal/face_copies.h>
 #include <Geodesic_ridge/internal/faces_by_index.h>
@@ -167,21 +168,9 @@ struct Ridge_graph
   // nodes on it.
   void label_border_loops()
   {
-    const std::size_t nv = num_vertices(tm);
-    Union_find loops(nv);
-    std::vector<char> on_border(nv, 0);
-    for(halfedge_descriptor h : halfedges(tm))
-      if(is_border(h, tm))
-      {
-        const std::size_t a = get(maps.vim, source(h, tm)), b = get(maps.vim, target(h, tm));
-        on_border[a] = on_border[b] = 1;
-        loops.unite(a, b);
-      }
-    loop_of_vertex.assign(nv, none);
-    std::map<std::size_t, std::size_t> label;
-    for(std::size_t v = 0; v < nv; ++v)
-      if(on_border[v]) loop_of_vertex[v] = label.emplace(loops.find(v), label.size()).first->second;
-    number_of_loops = label.size();
+    Border_loops b = border_loops(tm, maps.vim);
+    loop_of_vertex = std::move(b.loop_of_vertex);
+    number_of_loops = b.number_of_loops;
   }
   std::size_t loop_node(std::size_t loop) const { return nodes.size() + loop; }
   // `uf`, over the ridge nodes and then the loops: the nodes on a loop joined to it

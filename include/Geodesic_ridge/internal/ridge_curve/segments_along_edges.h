@@ -3,6 +3,8 @@
 //
 // Stage 3 pass: the ridge along mesh edges, between the cells of the two
 // faces at an edge that are different fronts.
+// Test: test_ridge_passes.cpp, "segments_along_edges: an edge between sheets,
+// or a kink inside one sheet, is ridge".
 #ifndef GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_SEGMENTS_ALONG_EDGES_H
 #define GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_SEGMENTS_ALONG_EDGES_H
 

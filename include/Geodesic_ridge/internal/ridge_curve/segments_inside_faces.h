@@ -3,6 +3,9 @@
 //
 // Stage 3 pass: the ridge inside faces, the envelope's edges between cells
 // that are different fronts (cells with equal fields are one front).
+// Test: test_ridge_passes.cpp, "envelope_cells and segments_inside_faces: ..."
+// and "segments_inside_faces: fields equal within the solver's noise are one
+// front".
 #ifndef GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_SEGMENTS_INSIDE_FACES_H
 #define GEODESIC_RIDGE_INTERNAL_RIDGE_CURVE_SEGMENTS_INSIDE_FACES_H
 

@@ -27,17 +27,10 @@ namespace Geodesic_ridge::internal::rough_cut {
 template <class TriangleMesh, class Maps>
 std::size_t boundary_loops(State<TriangleMesh, Maps>& s)
 {
-  Union_find loops(s.nv);
+  const Border_loops loops = border_loops(s.tm, s.maps.vim);
   s.boundary_vertex.assign(s.nv, 0);
-  for(auto h : halfedges(s.tm))
-    if(is_border(h, s.tm))
-    {
-      s.boundary_vertex[s.vi(source(h, s.tm))] = s.boundary_vertex[s.vi(target(h, s.tm))] = 1;
-      loops.unite(s.vi(source(h, s.tm)), s.vi(target(h, s.tm)));
-    }
-  std::size_t inside = 0;
-  for(std::size_t v = 0; v < s.nv; ++v) inside += !s.boundary_vertex[v];
-  return loops.number_of_sets() - inside;
+  for(std::size_t v = 0; v < s.nv; ++v) s.boundary_vertex[v] = loops.on_border(v);
+  return loops.number_of_loops;
 }
 
 // The counts of the result (the genus from the Euler characteristic, the border
