@@ -469,14 +469,14 @@ struct Window_propagation_solver : internal::Solver_from_source<Window_propagati
 
   /// The cone query of `Exact_solver` (on the mesh's own points): the distances, and
   /// `cones[S * i + j]`, the cone of the face of index i at its sample point
-  /// j (`Exact_solver::cone_samples()`, S of them), for every face for which
+  /// j (`Cone_samples::cone_samples()`, S of them), for every face for which
   /// `wanted(i)` is true (called once the distances are written). A sample's
   /// cone is that of the window lowest there: exact at the sample.
   template <class TriangleMesh, class Source, class VertexDistanceMap, class Wanted>
   void operator()(const TriangleMesh& tm, const Source& s, VertexDistanceMap distance, std::vector<Face_cone>& cones,
                   const Wanted& wanted) const
   {
-    (*this)(tm, s, distance, cones, wanted, Exact_solver::cone_samples());
+    (*this)(tm, s, distance, cones, wanted, Cone_samples::cone_samples());
   }
 
   /// Same, at the given sample points.

@@ -9,9 +9,9 @@
 #define GEODESIC_RIDGE_INTERNAL_ROUGH_CUT_SHORTEST_PATH_TREE_H
 
 #include <Geodesic_ridge/exceptions.h>
+#include <Geodesic_ridge/internal/border_loops.h>
 #include <Geodesic_ridge/internal/edge_graph_distances.h>
 #include <Geodesic_ridge/internal/rough_cut/state.h>
-#include <Geodesic_ridge/internal/union_find.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
