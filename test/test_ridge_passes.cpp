@@ -10,6 +10,7 @@
 // the two joining passes (border loops, verified pieces) need a whole
 // pipeline's cells: test_ridge_curve.cpp ("surfaces with several border
 // loops: ...") and test_boundary_meshes.cpp.
+#include <Geodesic_ridge/compute_geodesic_ridge.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/ridge_curve/assemble_ridge_curve.h>
 
@@ -367,4 +368,27 @@ TEST_CASE("keep_main_component, count_topology and chains_as_polylines on a clos
   std::size_t points = 0;
   for(const auto& pl : polylines) points += pl.size();
   CHECK(points == 7); // 4 segments: each chain has its ends
+}
+
+// Every switch of `Ridge_passes` can be turned off alone: the pipeline then
+// gives a ridge or a typed error, never a crash (with the thin-faces pass off,
+// stage 3 once read the thin-face flags it had not made).
+TEST_CASE("every pass switch off alone: a ridge or a typed error", "[ridge_passes]")
+{
+  // a tetrahedron with one vertex pulled out: faces of several shapes, one closed surface
+  const Mesh m = mesh_of({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.2, 0.3, 2}}, {{{0, 2, 1}}, {{0, 1, 3}}, {{1, 2, 3}}, {{0, 3, 2}}});
+  for(const auto& [name, pass] : Geodesic_ridge::internal::ridge_pass_names())
+  {
+    INFO("switched off: " << name);
+    try
+    {
+      const auto rc = Geodesic_ridge::compute_ridge_curve(
+          m, Mesh::Vertex_index(0), Geodesic_ridge::parameters::disabled_ridge_passes(static_cast<unsigned>(pass)));
+      CHECK(rc.statistics.ridge.components == 1);
+    }
+    catch(const Geodesic_ridge::Algorithm_error&)
+    {
+      SUCCEED("a typed error");
+    }
+  }
 }
