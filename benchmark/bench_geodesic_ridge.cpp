@@ -36,17 +36,13 @@ namespace fs = std::filesystem;
 
 int main(int argc, char** argv)
 {
-  std::size_t max_faces = 20000;
-  double tolerance = Geodesic_ridge::default_tolerance;
   std::vector<std::string> files;
   Pipeline_options options;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     if(options.parse(argc, argv, i)) continue;
-    if(a == "--max-faces" && i + 1 < argc) max_faces = std::stoul(argv[++i]);
-    else if(a == "--tolerance" && i + 1 < argc) tolerance = std::stod(argv[++i]);
-    else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
+    if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
     else files.push_back(a);
   }
   files = benchmark_meshes(files);
@@ -60,13 +56,13 @@ int main(int argc, char** argv)
     Mesh mesh;
     try { Geodesic_ridge::IO::read_triangle_mesh(file, mesh); }
     catch(const Geodesic_ridge::Error& e) { std::cerr << file << ": " << e.what() << "\n"; continue; }
-    if(mesh.number_of_faces() > max_faces) continue;
+    if(mesh.number_of_faces() > options.max_faces) continue;
     const Mesh::Vertex_index source(0);
 
     // Small meshes take milliseconds, and a shared machine is noisy: one SMSP
     // solve and one pipeline run alternate (so both see the same machine),
     // for at least 1 s or 40 rounds, and the fastest of each is reported.
-    typedef decltype(Geodesic_ridge::compute_ridge_curve(mesh, source, options.exact_parameters(tolerance))) Result;
+    typedef decltype(Geodesic_ridge::compute_ridge_curve(mesh, source, options.exact_parameters(options.tolerance))) Result;
     Result rc;
     double t_smsp = 1e300, spent = 0;
     try
@@ -78,7 +74,7 @@ int main(int argc, char** argv)
         Geodesic_ridge::Exact_solver()(mesh, source, CGAL::make_property_map(d));
         const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         t_smsp = std::min(t_smsp, t);
-        Result r = Geodesic_ridge::compute_ridge_curve(mesh, source, options.exact_parameters(tolerance));
+        Result r = Geodesic_ridge::compute_ridge_curve(mesh, source, options.exact_parameters(options.tolerance));
         if(k == 0 || r.timings.total() < rc.timings.total()) rc = std::move(r);
         spent += t + rc.timings.total();
       }

@@ -277,9 +277,9 @@ void cut_hole(Mesh& mesh, double radius)
 
 int main(int argc, char** argv)
 {
-  std::size_t max_faces = 20000, per_mesh = 10, random_sources = 2;
+  std::size_t per_mesh = 10, random_sources = 2;
   unsigned seed = 1;
-  double tolerance = 0.025, recall_tolerance = 0.002;
+  double recall_tolerance = 0.002;
   double fmm_tolerance = 0.01;
   int fmm_skip_rings = 3, fmm_reference_rings = 10;
   bool outliers = false, diagnose = false, reference = true;
@@ -294,9 +294,7 @@ int main(int argc, char** argv)
   {
     const std::string a = argv[i];
     if(options.parse(argc, argv, i)) continue;
-    if(a == "--max-faces" && i + 1 < argc) max_faces = std::stoul(argv[++i]);
-    else if(a == "--tolerance" && i + 1 < argc) tolerance = std::stod(argv[++i]);
-    else if(a == "--recall-tolerance" && i + 1 < argc) recall_tolerance = std::stod(argv[++i]);
+    if(a == "--recall-tolerance" && i + 1 < argc) recall_tolerance = std::stod(argv[++i]);
     else if(a == "--sources-per-mesh" && i + 1 < argc) per_mesh = std::stoul(argv[++i]);
     else if(a == "--random-sources" && i + 1 < argc) random_sources = std::stoul(argv[++i]);
     else if(a == "--seed" && i + 1 < argc) seed = static_cast<unsigned>(std::stoul(argv[++i]));
@@ -332,6 +330,8 @@ int main(int argc, char** argv)
     else files.push_back(a);
   }
   if(!boxes || !files.empty()) files = benchmark_meshes(files);
+  const double tolerance = options.tolerance;
+  const std::size_t max_faces = options.max_faces;
   if(boxes) { files.push_back("box_subdivided"); files.push_back("box_fans"); }
 
   std::cout << "Sources per mesh: vertices floor(i V / " << per_mesh << "), i = 0.." << per_mesh - 1 << ", and "

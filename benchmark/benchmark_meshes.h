@@ -34,6 +34,7 @@ inline std::vector<std::string> benchmark_meshes(std::vector<std::string> files)
 
 /// The pipeline's knobs, settable from a benchmark's command line, so that
 /// schedules can be compared on the same meshes:
+///   --max-faces N (default 20000; larger meshes are skipped) --tolerance T
 ///   --initial-rings K --extension-step K --maximum-rings K --maximum-solves K --fast-marching-margin K
 ///   --spur-angle DEG --tree-from-solver 0|1 --predicted 0|1
 ///   --leaf-curvature DEG --branch-curvature DEG --kink-angle DEG --corner-fallback 0|1
@@ -51,13 +52,17 @@ struct Pipeline_options
          leaf_curvature = Geodesic_ridge::default_leaf_curvature, kink_angle = Geodesic_ridge::default_kink_angle,
          branch_curvature = Geodesic_ridge::default_branch_curvature;
   unsigned disabled_passes = 0; // a bit per switched-off pass (`internal::Ridge_pass`)
+  std::size_t max_faces = 20000; // larger meshes are skipped
+  double tolerance = Geodesic_ridge::default_tolerance;
 
   /// consumes argv[i] (and its value) if it is one of the options above
   bool parse(int argc, char** argv, int& i)
   {
     const std::string a = argv[i];
     if(i + 1 >= argc) return false;
-    if(a == "--initial-rings") initial_rings = std::stoi(argv[++i]);
+    if(a == "--max-faces") max_faces = std::stoul(argv[++i]);
+    else if(a == "--tolerance") tolerance = std::stod(argv[++i]);
+    else if(a == "--initial-rings") initial_rings = std::stoi(argv[++i]);
     else if(a == "--extension-step") extension_step = std::stoi(argv[++i]);
     else if(a == "--maximum-rings") maximum_rings = std::stoi(argv[++i]);
     else if(a == "--maximum-solves") maximum_solves = std::stoi(argv[++i]);

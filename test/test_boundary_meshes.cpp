@@ -49,6 +49,15 @@ double degrees(const P2& a, const P2& b)
   return std::atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]) * 180 / pi;
 }
 
+// The annulus of the ridge tests (radii 1 and 3, 24 sectors) and its source,
+// the vertex nearest (2, 0) or, perturbed, (2, 0.6) (then off every symmetry axis).
+std::pair<GT::Flat_annulus, Mesh::Vertex_index> annulus_and_source(double perturbation, unsigned seed)
+{
+  GT::Flat_annulus an = GT::make_flat_annulus(24, 1, 3, perturbation, seed);
+  const Mesh::Vertex_index source = GT::nearest_vertex(an.mesh, Point_3(2, perturbation > 0 ? 0.6 : 0, 0));
+  return {std::move(an), source};
+}
+
 // Every generator at a coarse and a finer, perturbed resolution.
 std::vector<std::shared_ptr<GT::Surface_with_boundary> > all_boundary_meshes()
 {
@@ -274,8 +283,7 @@ TEST_CASE("flat annulus: at the analytic ridge, SMSP's shortest paths come aroun
   const unsigned seed = GT::test_seed(20261303);
   for(double perturbation : {0.0, 0.3})
   {
-    const GT::Flat_annulus an = GT::make_flat_annulus(24, 1, 3, perturbation, seed);
-    const Mesh::Vertex_index source = GT::nearest_vertex(an.mesh, Point_3(2, perturbation > 0 ? 0.6 : 0, 0));
+    const auto [an, source] = annulus_and_source(perturbation, seed);
     const Point_3 sp3 = an.mesh.point(source);
     INFO(describe(an) << " source " << std::size_t(source) << " at " << sp3);
     const GT::Flat_annulus_ridge ridge = an.ridge(sp3);
@@ -333,8 +341,7 @@ TEST_CASE("reference ridge on the flat annulus: the analytic arc, nothing on the
   const unsigned seed = GT::test_seed(20261304);
   for(double perturbation : {0.0, 0.3})
   {
-    const GT::Flat_annulus an = GT::make_flat_annulus(24, 1, 3, perturbation, seed);
-    const Mesh::Vertex_index source = GT::nearest_vertex(an.mesh, Point_3(2, perturbation > 0 ? 0.6 : 0, 0));
+    const auto [an, source] = annulus_and_source(perturbation, seed);
     INFO(describe(an) << " source " << std::size_t(source));
     const GT::Flat_annulus_ridge ridge = an.ridge(an.mesh.point(source));
     const auto ref = GT::reference_ridge(an.mesh, source, reference_options());
@@ -410,7 +417,7 @@ TEST_CASE("reference ridge on the flat annulus from a point of an edge, border o
   for(const auto& e : edges)
   {
     const auto loc = edge_location(m, e.second, 0.37);
-    const std::array<double, 3> w = GT::internal::smsp_source_coordinates(loc.second);
+    const std::array<double, 3> w = Geodesic_ridge::internal::smsp_source_coordinates(loc.second);
     SMSP sp(m);
     sp.add_source_point(loc.first, {{w[0], w[1], w[2]}});
     sp.build_sequence_tree();
@@ -493,7 +500,7 @@ TEST_CASE("reference ridge on the open box and the torus with a hole: consistent
       SMSP sp(m);
       if(k == 2)
       {
-        const std::array<double, 3> w = GT::internal::smsp_source_coordinates(loc.second);
+        const std::array<double, 3> w = Geodesic_ridge::internal::smsp_source_coordinates(loc.second);
         sp.add_source_point(loc.first, {{w[0], w[1], w[2]}});
       }
       else sp.add_source_point(k == 0 ? inside : rim);

@@ -108,19 +108,30 @@ std::string number(double x)
   return out.str();
 }
 
+// The vertex and face lines of OFF, OBJ and ASCII PLY: the formats differ only
+// in a tag before each line, whether a face line starts with its size, and the
+// first index (1 in OBJ).
+void write_vertex_and_face_lines(std::ostream& out, const Soup& s, const char* vertex_tag,
+                                 const char* face_tag, bool face_size, long long first_index)
+{
+  for(const auto& p : s.points)
+    out << vertex_tag << number(p[0]) << " " << number(p[1]) << " " << number(p[2]) << "\n";
+  for(const auto& f : s.faces)
+  {
+    out << face_tag;
+    if(face_size)
+      out << f.size();
+    for(long long i : f)
+      out << " " << i + first_index;
+    out << "\n";
+  }
+}
+
 std::string to_off(const Soup& s)
 {
   std::ostringstream out;
   out << "OFF\n" << s.points.size() << " " << s.faces.size() << " 0\n";
-  for(const auto& p : s.points)
-    out << number(p[0]) << " " << number(p[1]) << " " << number(p[2]) << "\n";
-  for(const auto& f : s.faces)
-  {
-    out << f.size();
-    for(long long i : f)
-      out << " " << i;
-    out << "\n";
-  }
+  write_vertex_and_face_lines(out, s, "", "", true, 0);
   return out.str();
 }
 
@@ -128,15 +139,7 @@ std::string to_obj(const Soup& s)
 {
   std::ostringstream out;
   out << "# written by test_input_validation\n";
-  for(const auto& p : s.points)
-    out << "v " << number(p[0]) << " " << number(p[1]) << " " << number(p[2]) << "\n";
-  for(const auto& f : s.faces)
-  {
-    out << "f";
-    for(long long i : f)
-      out << " " << i + 1;
-    out << "\n";
-  }
+  write_vertex_and_face_lines(out, s, "v ", "f", false, 1);
   return out.str();
 }
 
@@ -153,15 +156,7 @@ std::string to_ply(const Soup& s)
 {
   std::ostringstream out;
   out << ply_header(s, "ascii");
-  for(const auto& p : s.points)
-    out << number(p[0]) << " " << number(p[1]) << " " << number(p[2]) << "\n";
-  for(const auto& f : s.faces)
-  {
-    out << f.size();
-    for(long long i : f)
-      out << " " << i;
-    out << "\n";
-  }
+  write_vertex_and_face_lines(out, s, "", "", true, 0);
   return out.str();
 }
 

@@ -10,6 +10,7 @@
 #include <Geodesic_ridge/exceptions.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/Face_filtered_graph.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -53,9 +54,10 @@ public:
   typedef typename GT::vertex_descriptor vertex_descriptor;
   /// a face, of the mesh or of the component
   typedef typename GT::face_descriptor face_descriptor;
-  /// a surface point: a face and barycentric coordinates in \cgal's order
-  /// (`source(halfedge(f))`, `target(halfedge(f))`, `target(next(halfedge(f)))`)
-  typedef std::pair<face_descriptor, std::array<double, 3>> Face_location;
+  /// a surface point: \cgal's `Polygon_mesh_processing::Face_location`, a face
+  /// and barycentric coordinates in the order `source(halfedge(f))`,
+  /// `target(halfedge(f))`, `target(next(halfedge(f)))`
+  typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
 
   /// the number of connected components of the mesh (edge-connected, as
   /// `CGAL::Polygon_mesh_processing::connected_components()` counts them)

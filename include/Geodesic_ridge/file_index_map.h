@@ -80,19 +80,20 @@ template <class TriangleMesh>
 class File_index_map
 {
 public:
+  /// the point type of the file's vertices as the map keeps them
+  typedef internal::repair::Epick::Point_3 Point_3;
+  /// "no such index"
+  static constexpr std::size_t no_index = internal::repair::no_index;
   /// the graph traits of `TriangleMesh`
   typedef boost::graph_traits<TriangleMesh> GT;
   /// a vertex of the mesh
   typedef typename GT::vertex_descriptor vertex_descriptor;
   /// a face of the mesh
   typedef typename GT::face_descriptor face_descriptor;
-  /// a point of a face of the mesh (barycentric coordinates in \cgal's order:
-  /// `source(halfedge(f))`, `target(halfedge(f))`, `target(next(halfedge(f)))`)
-  typedef std::pair<face_descriptor, std::array<double, 3>> Face_location;
-  /// the point type of the file's vertices as the map keeps them
-  typedef internal::repair::Epick::Point_3 Point_3;
-  /// "no such index"
-  static constexpr std::size_t no_index = internal::repair::no_index;
+  /// a point of a face of the mesh: \cgal's `Polygon_mesh_processing::Face_location`
+  /// (barycentric coordinates in the order `source(halfedge(f))`,
+  /// `target(halfedge(f))`, `target(next(halfedge(f)))`)
+  typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
 
   /// an empty map
   File_index_map() = default;
@@ -128,24 +129,24 @@ public:
     r.file_faces_ = file_faces_;
     r.merged_into_ = merged_into_;
     r.statistics_ = statistics_;
-    const auto vim = CGAL::get_initialized_vertex_index_map(component);
-    const auto fim = CGAL::get_initialized_face_index_map(component);
-    r.vertex_to_file_.resize(num_vertices(component));
-    r.vertices_.resize(num_vertices(component));
-    for(vertex_descriptor v : internal::vertices_of(component))
-    {
-      const std::size_t i = static_cast<std::size_t>(get(vim, v));
-      r.vertex_to_file_[i] = file_vertex(cc.mesh_vertex(v), tm);
-      r.vertices_[i] = v;
-    }
-    r.face_to_file_.resize(num_faces(component));
-    r.faces_.resize(num_faces(component));
-    for(face_descriptor f : internal::faces_of(component))
-    {
-      const std::size_t i = static_cast<std::size_t>(get(fim, f));
-      r.face_to_file_[i] = file_face(cc.mesh_face(f), tm);
-      r.faces_[i] = f;
-    }
+    // the component's element i (by its index map): its descriptor and its
+    // file index, through the element of tm it was copied from
+    auto number = [](const auto& elements, const auto& index_map, std::size_t n, auto file_index,
+                     std::vector<std::size_t>& to_file, auto& descriptors) {
+      to_file.resize(n);
+      descriptors.resize(n);
+      for(const auto& x : elements)
+      {
+        const std::size_t i = static_cast<std::size_t>(get(index_map, x));
+        to_file[i] = file_index(x);
+        descriptors[i] = x;
+      }
+    };
+    number(internal::vertices_of(component), CGAL::get_initialized_vertex_index_map(component),
+           num_vertices(component), [&](vertex_descriptor v) { return file_vertex(cc.mesh_vertex(v), tm); },
+           r.vertex_to_file_, r.vertices_);
+    number(internal::faces_of(component), CGAL::get_initialized_face_index_map(component), num_faces(component),
+           [&](face_descriptor f) { return file_face(cc.mesh_face(f), tm); }, r.face_to_file_, r.faces_);
     bucket(r.vertex_to_file_, file_points_.size(), r.vertex_begin_, r.vertex_order_);
     bucket(r.face_to_file_, file_faces_.size(), r.face_begin_, r.face_order_);
     r.face_elsewhere_.assign(file_faces_.size(), false);

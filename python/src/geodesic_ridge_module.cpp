@@ -56,7 +56,7 @@ typedef Kernel::Point_3 Point_3;
 typedef CGAL::Surface_mesh<Point_3> Mesh;
 typedef Mesh::Vertex_index vertex_descriptor;
 typedef Mesh::Face_index face_descriptor;
-typedef std::pair<face_descriptor, std::array<double, 3> > Location;
+typedef CGAL::Polygon_mesh_processing::Face_location<Mesh, double> Location;
 typedef GR::Ridge_curve<Mesh, Point_3> Ridge_curve;
 typedef decltype(GR::make_distance_field(std::declval<const Mesh&>(), std::declval<const Ridge_curve&>())) Field_type;
 

@@ -627,14 +627,12 @@ typedef std::array<std::size_t, 3> Triangle;
 
 inline Vector_3 unit(const Vector_3& v) { return v / std::sqrt(v.squared_length()); }
 
-inline void check_perturbation(double perturbation, const char* who)
-{
-  if(perturbation < 0 || perturbation > 0.3) throw std::invalid_argument(std::string(who) + ": perturbation in [0, 0.3]");
-}
-
+/// The fields every surface with a border has; checks the perturbation.
 template <class S>
 void set_common(S& s, const char* name, int n, double perturbation, unsigned seed, int b, int g, bool empty_ridge)
 {
+  if(perturbation < 0 || perturbation > 0.3)
+    throw std::invalid_argument(std::string(name) + ": perturbation in [0, 0.3]");
   s.name = name; s.n = n; s.perturbation = perturbation; s.seed = seed;
   s.boundary_loops = b; s.genus = g; s.empty_ridge = empty_ridge;
 }
@@ -810,7 +808,6 @@ inline Flat_square make_flat_square(int n, double perturbation = 0, unsigned see
 {
   namespace BI = boundary_internal;
   if(n < 2) throw std::invalid_argument("make_flat_square: n >= 2");
-  BI::check_perturbation(perturbation, "make_flat_square");
   Flat_square s;
   BI::set_common(s, "flat square", n, perturbation, seed, 1, 0, true);
   std::vector<Point_3> points;
@@ -868,7 +865,6 @@ inline Flat_L_domain make_flat_L_domain(int n, double perturbation = 0, unsigned
 {
   namespace BI = boundary_internal;
   if(n < 1) throw std::invalid_argument("make_flat_L_domain: n >= 1");
-  BI::check_perturbation(perturbation, "make_flat_L_domain");
   Flat_L_domain s;
   BI::set_common(s, "flat L-shaped domain", n, perturbation, seed, 1, 0, true);
   const int w = 2 * n + 1;
@@ -986,7 +982,6 @@ inline Half_cylinder make_half_cylinder(int n, double radius = 1, double height 
 {
   namespace BI = boundary_internal;
   if(n < 2 || !(radius > 0) || !(height > 0)) throw std::invalid_argument("make_half_cylinder: n >= 2, positive sizes");
-  BI::check_perturbation(perturbation, "make_half_cylinder");
   Half_cylinder s;
   BI::set_common(s, "half-cylinder", n, perturbation, seed, 1, 0, true);
   s.radius = radius;
@@ -1242,7 +1237,6 @@ inline Flat_annulus make_flat_annulus(int n, double inner_radius = 1, double out
   const double pi = 3.14159265358979323846;
   if(n < 6 || !(inner_radius > 0) || !(inner_radius < outer_radius * std::cos(pi / n)))
     throw std::invalid_argument("make_flat_annulus: n >= 6, 0 < r < R cos(pi/n)");
-  BI::check_perturbation(perturbation, "make_flat_annulus");
   Flat_annulus s;
   BI::set_common(s, "flat annulus", n, perturbation, seed, 2, 0, false);
   s.inner_radius = inner_radius;
@@ -1303,7 +1297,6 @@ inline Open_box make_open_box(int n, double perturbation = 0, unsigned seed = 1)
 {
   namespace BI = boundary_internal;
   if(n < 1) throw std::invalid_argument("make_open_box: n >= 1");
-  BI::check_perturbation(perturbation, "make_open_box");
   Open_box s;
   BI::set_common(s, "open box", n, perturbation, seed, 1, 0, false);
   Polyhedron_description d = box_corners_and_faces();
@@ -1343,7 +1336,6 @@ inline Torus_with_hole make_torus_with_hole(int n, double major_radius = 1, doub
   const int m = std::max(4, int(std::lround(n * minor_radius / major_radius)));
   if(n < 4 || !(minor_radius > 0) || !(minor_radius < major_radius) || hole_cells < 1 || hole_cells > std::min(n, m) - 3)
     throw std::invalid_argument("make_torus_with_hole: n >= 4, 0 < r < R, 1 <= hole cells <= min(n, m) - 3");
-  BI::check_perturbation(perturbation, "make_torus_with_hole");
   Torus_with_hole s;
   BI::set_common(s, "torus with a hole", n, perturbation, seed, 1, 1, false);
   s.major_radius = major_radius;

@@ -20,7 +20,7 @@
 #include <Geodesic_ridge/solvers/Fast_marching_solver.h>
 
 #include <CGAL/Surface_mesh_shortest_path.h>
-#include "smsp_source_coordinates.h"
+#include <Geodesic_ridge/internal/smsp_source_coordinates.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
@@ -49,7 +49,7 @@ std::vector<double> distances_on_mesh(const TriangleMesh& tm, const Source& sour
       sp.add_source_point(source);
     else
     {
-      const auto w = internal::smsp_source_coordinates(source.second);
+      const auto w = Geodesic_ridge::internal::smsp_source_coordinates(source.second);
       sp.add_source_point(source.first, {{w[0], w[1], w[2]}});
     }
     sp.build_sequence_tree();

@@ -55,7 +55,7 @@
 
 #include <Geodesic_ridge/ridge_curve.h>
 
-#include "smsp_source_coordinates.h"
+#include <Geodesic_ridge/internal/smsp_source_coordinates.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -472,7 +472,7 @@ auto reference_ridge(const TriangleMesh& tm, typename boost::graph_traits<Triang
 /// The exact reference ridge of a source at a surface point (face, barycentric
 /// coordinates in CGAL's order). A point of an edge, border or not, is moved
 /// into the face by 2^-40 of the barycentric range with CGAL < 5.6
-/// (`internal::smsp_source_coordinates()`).
+/// (`Geodesic_ridge::internal::smsp_source_coordinates()`).
 template <class TriangleMesh, class FT>
 auto reference_ridge(const TriangleMesh& tm,
                      const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor, std::array<FT, 3> >& loc,
@@ -480,7 +480,7 @@ auto reference_ridge(const TriangleMesh& tm,
 {
   const auto t0 = std::chrono::steady_clock::now();
   internal::SMSP_for<TriangleMesh> sp(tm);
-  const std::array<FT, 3> w = internal::smsp_source_coordinates(loc.second);
+  const std::array<FT, 3> w = Geodesic_ridge::internal::smsp_source_coordinates(loc.second);
   typename internal::SMSP_for<TriangleMesh>::Barycentric_coordinates b = {{w[0], w[1], w[2]}};
   sp.add_source_point(loc.first, b);
   const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

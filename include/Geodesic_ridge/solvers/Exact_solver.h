@@ -9,11 +9,11 @@
 #include <Geodesic_ridge/internal/corner_angles.h>
 #include <Geodesic_ridge/solvers/Face_cone.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
+#include <Geodesic_ridge/internal/smsp_source_coordinates.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/version.h>
 #include <CGAL/Surface_mesh_shortest_path.h>
 
 #include <array>
@@ -152,21 +152,8 @@ private:
                          const std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
                                          std::array<FT, 3> >& loc)
   {
-    std::array<FT, 3> w = loc.second;
-#if CGAL_VERSION_NR < CGAL_VERSION_NUMBER(5, 6, 0)
-    // CGAL before 5.6 starts no cone towards the ends of the edge that holds a
-    // source point (CGAL issue #6681, fixed by pull request #6739): measured on
-    // the doubly covered square, distances 0.4 mean edges too long. The point
-    // is moved into the face by 2^-40 of its barycentric range instead, which
-    // changes distances by about 1e-13 of an edge.
-    int zeros = 0;
-    for(const FT& x : w) zeros += (x == FT(0));
-    if(zeros == 1)
-    {
-      const FT nudge = FT(1) / FT(1099511627776.0);
-      for(FT& x : w) x = (x == FT(0)) ? nudge : x * (FT(1) - nudge);
-    }
-#endif
+    // (before CGAL 5.6, a point on an edge is moved into its face)
+    const std::array<FT, 3> w = internal::smsp_source_coordinates(loc.second);
     typename Solver::Barycentric_coordinates b = {{w[0], w[1], w[2]}};
     sp.add_source_point(loc.first, b);
   }
