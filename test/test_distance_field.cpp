@@ -827,7 +827,7 @@ TEST_CASE("cone ridge: the cones agree on it on real meshes", "[distance_field]"
 }
 
 
-TEST_CASE("cone ridge: exact on the doubly covered square but near some junctions", "[distance_field]")
+TEST_CASE("cone ridge: exact on the doubly covered square but near some junctions", "[slow][distance_field]")
 {
   // Every point and chord of the cone ridge lies on the analytic cut locus
   // (within 1e-9), except where the linear ridge has a junction of three

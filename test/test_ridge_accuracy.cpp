@@ -171,7 +171,7 @@ TEST_CASE("reference ridge: fronts agree with the exact distance", "[ridge_accur
 // Precision at the default tolerance and recall of the major ridge at small
 // tolerances (0.005, 0.001), on genus 0, 0, 1, 2, from two sources each
 // (vertex 0 and V/2).
-TEST_CASE("ridge accuracy against the exact reference ridge", "[ridge_accuracy]")
+TEST_CASE("ridge accuracy against the exact reference ridge", "[slow][ridge_accuracy]")
 {
   const std::string name = GENERATE(as<std::string>(), "bunny_1k.off", "armadillo_2k.off", "torus_1k.off", "eight.off");
   const Mesh m = load(name);
@@ -254,7 +254,7 @@ TEST_CASE("ridge accuracy against the exact reference ridge", "[ridge_accuracy]"
 // parameters::corner_fallback (default: a sample nearer to each corner, where
 // the kink passes between the corner and its first sample, so that no
 // sample's cone gives the corner's front): armadillo_2k v648 3.54 without it.
-TEST_CASE("kinks inside one sheet: the major ridge at a small tolerance", "[ridge_accuracy]")
+TEST_CASE("kinks inside one sheet: the major ridge at a small tolerance", "[slow][ridge_accuracy]")
 {
   namespace p = Geodesic_ridge::parameters;
   auto check = [&](const Mesh& m, const auto& source, const std::string& what) {
@@ -298,7 +298,7 @@ TEST_CASE("kinks inside one sheet: the major ridge at a small tolerance", "[ridg
 // 1.79, v481 1.11 (bench_ridge_accuracy --sources-per-mesh 25 --seed 7; and
 // bunny_7k v1951 10.1). Exact solver, and our window propagation, which has no
 // cones (the kink split does not run).
-TEST_CASE("copies that recombine nearer sheets' fronts: the major ridge at a small tolerance", "[ridge_accuracy]")
+TEST_CASE("copies that recombine nearer sheets' fronts: the major ridge at a small tolerance", "[slow][ridge_accuracy]")
 {
   namespace p = Geodesic_ridge::parameters;
   auto check = [&](const Mesh& m, std::size_t v, const std::string& what) {
@@ -406,7 +406,7 @@ void require_every_shortest_path(const Mesh& m, const RidgeCurve& rc, const std:
 
 } // namespace
 
-TEST_CASE("the extended surface holds every shortest path, from many sources", "[ridge_accuracy][extension]")
+TEST_CASE("the extended surface holds every shortest path, from many sources", "[slow][ridge_accuracy][extension]")
 {
   const std::string name =
       GENERATE(as<std::string>(), "bunny_1k.off", "eight.off", "armadillo_2k.off", "knot_3k.off", "teddy_3k.off");
@@ -504,7 +504,7 @@ TEST_CASE("re-triangulation: the same surface split otherwise keeps its ridge", 
 // agreed: the ridge ran along the caps (teddy_3k with a fifth of its faces
 // capped, from vertices 479 and 958, against the reference of the original:
 // precision p95 0.48 and 0.54 mean edges before, 0.09 and 0.15 now).
-TEST_CASE("thin faces: caps on the same surface keep its ridge", "[ridge_accuracy]")
+TEST_CASE("thin faces: caps on the same surface keep its ridge", "[slow][ridge_accuracy]")
 {
   const Mesh m = load("teddy_3k.off");
   Mesh capped = m;
@@ -596,7 +596,7 @@ TEST_CASE("fast marching against itself: the margin around E", "[ridge_accuracy]
 
 // One regression per cause found (issue 10). Each names the source that
 // showed it; the comment says what E lacked before.
-TEST_CASE("extension regressions: each cause of a missing shortest path", "[ridge_accuracy][extension]")
+TEST_CASE("extension regressions: each cause of a missing shortest path", "[slow][ridge_accuracy][extension]")
 {
   namespace p = Geodesic_ridge::parameters;
   auto run = [](const Mesh& m, std::size_t v) {

@@ -1137,7 +1137,7 @@ TEST_CASE("surfaces with a border: the ridge with the border is connected, with 
 // edge piece between them joins no regions) none of these sources needs the
 // join any more (0 of 7, 2026-12-06); the pass stays for the cases it was
 // not measured on, and this test for the topology.
-TEST_CASE("surfaces with several border loops: the pieces hanging from different loops are joined", "[ridge_curve][border]")
+TEST_CASE("surfaces with several border loops: the pieces hanging from different loops are joined", "[slow][ridge_curve][border]")
 {
   const Mesh m = with_holes("armadillo_2k.off", {300, 800}, 0.04);
   REQUIRE(CGAL::is_valid_polygon_mesh(m));

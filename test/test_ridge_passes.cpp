@@ -11,6 +11,7 @@
 // pipeline's cells: test_ridge_curve.cpp ("surfaces with several border
 // loops: ...") and test_boundary_meshes.cpp.
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
+#include <Geodesic_ridge/internal/corner_angles.h>
 #include <Geodesic_ridge/internal/mesh_maps.h>
 #include <Geodesic_ridge/internal/ridge_curve/assemble_ridge_curve.h>
 
@@ -70,14 +71,8 @@ struct Stage3
     E.source_is_vertex = false;
     E.source_location.first = Mesh::Face_index(1000); // (no face of these meshes holds the source)
     copies.resize(m.number_of_faces());
-    // the angle sums, as the pipeline's `Corner_angles` has them
-    angle_sum.assign(m.number_of_vertices(), 0.0);
-    for(auto h : m.halfedges())
-    {
-      if(m.is_border(h)) continue;
-      const Point_3 a = m.point(m.source(h)), b = m.point(m.target(h)), c = m.point(m.target(m.next(h)));
-      angle_sum[std::size_t(m.target(h))] += CGAL::to_double(CGAL::approximate_angle(a, b, c)) * CGAL_PI / 180;
-    }
+    // the angle sums, as the pipeline has them
+    angle_sum = Geodesic_ridge::internal::corner_angles(m, maps.vpm, maps.vim, maps.fim).angle_sum;
   }
 
   // copy `copy` of E on face f, its field the distance from `apex` in the plane, plus `offset`

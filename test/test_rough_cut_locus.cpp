@@ -376,7 +376,7 @@ TEST_CASE("the shortest-path tree is a Dijkstra tree rooted at the source", "[ro
 }
 
 TEST_CASE("cutting along K gives one disk with the source inside, for every tolerance and genus 0 to 3",
-          "[rough_cut_locus][sweep]")
+          "[slow][rough_cut_locus][sweep]")
 {
   const std::vector<std::pair<std::string, int> > meshes = {
       {"bunny_1k.off", 0}, {"armadillo_2k.off", 0}, {"torus_1k.off", 1},
@@ -642,7 +642,7 @@ TEST_CASE("the rough cut polylines are K, with the mesh's exact coordinates", "[
   }
 }
 
-TEST_CASE("every closed mesh of ../shared/data gives a disk cut from several sources", "[rough_cut_locus][shared]")
+TEST_CASE("every closed mesh of ../shared/data gives a disk cut from several sources", "[slow][rough_cut_locus][shared]")
 {
   namespace fs = std::filesystem;
   const fs::path dir = GEODESIC_RIDGE_SHARED_DATA_DIR;

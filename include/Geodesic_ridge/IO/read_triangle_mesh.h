@@ -28,22 +28,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
-#include <charconv>
-#include <cmath>
-#include <cerrno>
-#include <cstdint>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
+#include <cstddef>
 #include <fstream>
-#include <iterator>
-#include <limits>
 #include <new>
-#include <sstream>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <vector>
 
 namespace Geodesic_ridge {

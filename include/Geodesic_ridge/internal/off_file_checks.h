@@ -13,7 +13,9 @@
 #include <CGAL/IO/OFF/File_header_OFF.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -143,12 +145,36 @@ private:
   // of w = 0, on which CGAL's reader asserts.
   void check_ascii_OFF_faces(const CGAL::File_header_OFF& header, const std::string& text, std::size_t p) const
   {
-    const std::size_t n = text.size();
-    const auto header_end = text.begin() + static_cast<std::ptrdiff_t>(p);
-    std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), header_end, '\n'));
-    std::size_t first = 0, last = 0, first_line = 0;
-    // the line CGAL's scanner reads next is [first, last), line `first_line`
-    auto next_line = [&]() {
+    Ascii_OFF_lines lines(text, p);
+    if(textures_without_colors(header))
+      file_error(filename_, "texture coordinates without colors (ST but no C in the OFF keyword): CGAL's reader reads "
+                            "them at an uninitialized index");
+    if(check_ascii_OFF_vertex_lines(header, lines))
+      check_ascii_OFF_face_lines(header, lines);
+  }
+
+  static bool textures_without_colors(const CGAL::File_header_OFF& header)
+  {
+    return header.has_textures() && !header.has_colors() && header.size_of_vertices() > 0;
+  }
+
+  // The lines of an ASCII OFF file after its header, as CGAL's scanner reads them.
+  struct Ascii_OFF_lines
+  {
+    const std::string& text;
+    std::size_t p;              // where the scan goes on
+    std::size_t line;           // the number of the line at p
+    std::size_t first = 0, last = 0, first_line = 0; // the line read last: [first, last), its number
+    std::vector<double> numbers; // its numbers (read_numbers())
+
+    Ascii_OFF_lines(const std::string& text, std::size_t p)
+      : text(text), p(p), line(1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(p), '\n')))
+    {}
+
+    // the next line that is neither blank nor a comment; false at the end
+    bool next()
+    {
+      const std::size_t n = text.size();
       for(;;)
       {
         while(p < n && is_space(text[p]))
@@ -162,15 +188,15 @@ private:
         line += eol == std::string::npos ? 0 : 1;
         if(text[first] != '#') return true;
       }
-    };
-    auto where = [&] { return "line " + std::to_string(first_line) + ": "; };
-    std::string number;
+    }
+
     // the numbers of the line as the scanner reads them (operator>> up to the
     // first that fails, an overflow too)
-    std::vector<double> numbers;
-    auto read_numbers = [&] {
+    void read_numbers()
+    {
       numbers.clear();
       Characters c{text.data() + first, text.data() + last};
+      std::string number;
       for(;;)
       {
         while(c.peek() != -1 && is_space(static_cast<char>(c.peek()))) c.next();
@@ -181,65 +207,84 @@ private:
         if(std::isinf(x)) return;
         numbers.push_back(x);
       }
-    };
-    // scan_color(): one number, an index in a color table (an int; the table
-    // is read before it if negative), or three
-    auto check_color = [&](std::size_t at, std::size_t values, const std::string& item) {
-      if(values >= 3 || (values == 1 && numbers[at] > -1 && numbers[at] < 2147483648.0)) return;
-      file_error(filename_, where() + item + " has " + std::to_string(values) +
-                              " color value(s) after one with colors: CGAL's reader takes 3 or 4, or 1 (a color index, "
-                              "not negative), and reads out of bounds otherwise");
-    };
-    const bool colors = header.has_colors(), textures = header.has_textures(), w = header.is_homogeneous();
+    }
+
+    std::string where() const { return "line " + std::to_string(first_line) + ": "; }
+  };
+
+  // scan_color(): one number, an index in a color table (an int; the table
+  // is read before it if negative), or three
+  void check_color(const Ascii_OFF_lines& lines, std::size_t at, std::size_t values, const std::string& item) const
+  {
+    if(values >= 3 || (values == 1 && lines.numbers[at] > -1 && lines.numbers[at] < 2147483648.0)) return;
+    file_error(filename_, lines.where() + item + " has " + std::to_string(values) +
+                            " color value(s) after one with colors: CGAL's reader takes 3 or 4, or 1 (a color index, "
+                            "not negative), and reads out of bounds otherwise");
+  }
+
+  // the vertex lines: w != 0, and the colors where there are; false if CGAL's
+  // reader fails on them (it says why)
+  bool check_ascii_OFF_vertex_lines(const CGAL::File_header_OFF& header, Ascii_OFF_lines& lines) const
+  {
+    const bool colors = header.has_colors(), w = header.is_homogeneous();
     const std::size_t h = w ? 1 : 0, color_at = 3 + h + (header.has_normals() ? 3 + h : 0);
-    const std::size_t need = color_at + (textures ? 2 + h : 0);
+    const std::size_t need = color_at + (header.has_textures() ? 2 + h : 0);
     const std::size_t nv = header.size_of_vertices();
-    if(textures && !colors && nv > 0)
-      file_error(filename_, "texture coordinates without colors (ST but no C in the OFF keyword): CGAL's reader reads "
-                            "them at an uninitialized index");
-    bool vertex_colors = false, face_colors = false;
+    bool vertex_colors = false;
     for(std::size_t i = 0; i < nv; ++i)
     {
-      if(!next_line())
+      if(!lines.next())
       {
-        if(!colors) return; // (CGAL's reader fails on the missing vertex)
+        if(!colors) return false; // (CGAL's reader fails on the missing vertex)
         file_error(filename_, "file is truncated: the header announces " + std::to_string(nv) +
                                 " vertices, but it ends after " + std::to_string(i));
       }
       if(!colors && !w) continue;
-      read_numbers();
+      lines.read_numbers();
+      const std::vector<double>& numbers = lines.numbers;
       if(w && numbers.size() >= 4 && numbers[3] == 0)
-        file_error(filename_, where() + "vertex " + std::to_string(i) + " has the homogeneous coordinate w = 0");
+        file_error(filename_, lines.where() + "vertex " + std::to_string(i) + " has the homogeneous coordinate w = 0");
       if(!colors) continue;
       if(numbers.size() < need)
-        file_error(filename_, where() + "vertex " + std::to_string(i) + " has " + std::to_string(numbers.size()) +
-                                " number(s), expected " + std::to_string(need) + " at least");
+        file_error(filename_, lines.where() + "vertex " + std::to_string(i) + " has " +
+                                std::to_string(numbers.size()) + " number(s), expected " + std::to_string(need) +
+                                " at least");
       const std::size_t values = numbers.size() - need;
       vertex_colors = vertex_colors || values != 0;
-      if(vertex_colors) check_color(color_at, values, "vertex " + std::to_string(i));
+      if(vertex_colors) check_color(lines, color_at, values, "vertex " + std::to_string(i));
     }
+    return true;
+  }
+
+  // the face lines: sizes the file can hold, and the colors where there are
+  void check_ascii_OFF_face_lines(const CGAL::File_header_OFF& header, Ascii_OFF_lines& lines) const
+  {
+    const std::string& text = lines.text;
+    const std::size_t n = text.size(), nv = header.size_of_vertices();
+    bool face_colors = false;
     for(std::size_t j = 0; j < header.size_of_facets(); ++j)
     {
-      if(!next_line()) return; // (CGAL's reader reads an empty face, then fails)
+      if(!lines.next()) return; // (CGAL's reader reads an empty face, then fails)
       // (the line ends at a '#', where no number goes on)
-      Characters line_characters{text.data() + first, text.data() + n};
+      Characters line_characters{text.data() + lines.first, text.data() + n};
       if(!read_float_characters(line_characters)) return; // (CGAL's reader fails there)
       const std::size_t q = static_cast<std::size_t>(line_characters.p - text.data());
-      number.assign(text, first, q - first);
+      const std::string number = text.substr(lines.first, q - lines.first);
       const double size = std::strtod(number.c_str(), nullptr);
       if(std::isinf(size)) return; // (operator>> fails on an overflow: CGAL's reader fails there)
       // each index takes 2 bytes at least (" 0")
       if(size > -1 && size < static_cast<double>((n - q) / 2) + 1)
       {
-        if(!colors) continue;
-        read_numbers();
+        if(!header.has_colors()) continue;
+        lines.read_numbers();
+        const std::vector<double>& numbers = lines.numbers;
         const std::size_t k = static_cast<std::size_t>(size);
         if(numbers.size() < k + 1) return; // (CGAL's reader fails on a missing index, before the color)
         for(std::size_t m = 1; m <= k; ++m)
           if(!(numbers[m] > -1 && numbers[m] < static_cast<double>(nv))) return; // (and on an index out of range)
         const std::size_t values = numbers.size() - k - 1;
         face_colors = face_colors || values != 0;
-        if(face_colors) check_color(k + 1, values, "face " + std::to_string(j));
+        if(face_colors) check_color(lines, k + 1, values, "face " + std::to_string(j));
         continue;
       }
       // the line-by-line diagnosis of an "OFF" file says what is wrong on
@@ -248,8 +293,7 @@ private:
       std::vector<CGAL::Epick::Point_3> points;
       std::vector<std::vector<std::size_t>> polygons;
       diagnose_OFF(filename_, points, polygons);
-      file_error(filename_, where() + "face " + std::to_string(j) + " announces " + text.substr(first, q - first) +
-                              " vertices, " +
+      file_error(filename_, lines.where() + "face " + std::to_string(j) + " announces " + number + " vertices, " +
                               (size <= -1 ? std::string("a negative count")
                                           : "which the file cannot hold (" + std::to_string(n - q) +
                                               " bytes left, at least 2 per index)"));

@@ -151,104 +151,131 @@ private:
     std::vector<Ply_property> properties;  // those CGAL's reader reads
   };
 
+  // The header as CGAL's reader takes it (at most 100000 lines).
+  struct Ply_header
+  {
+    bool ply = false;      // the first line says "ply"
+    bool readable = true;  // CGAL's reader reads it (else it fails, and says so)
+    bool ended = false;    // an "end_header" line
+    bool gave_up = false;  // an element line CGAL's reader fails on (and says what is wrong)
+    bool binary = false;
+    int format = -1;       // 0 ASCII, 1 little-endian, 2 big-endian, -1 none CGAL's reader knows
+    std::vector<Ply_element> elements;
+    std::uintmax_t bytes = 0; // of the lines read
+    int lines = 0;
+  };
+
   void check_PLY() const
   {
     std::ifstream in(filename_, std::ios::binary);
-    std::string line;
-    bool binary = false, ply = false, readable = true, ended = false;
-    int format = -1; // 0 ASCII, 1 little-endian, 2 big-endian, -1 none CGAL's reader knows
-    std::vector<Ply_element> elements;
-    std::uintmax_t header = 0;
-    int lines = 0;
-    for(; lines < 100000 && std::getline(in, line); ++lines)
+    const Ply_header h = read_PLY_header(in);
+    if(h.gave_up) return;
+    if(!h.ended)
     {
-      header += line.size() + 1;
+      // CGAL's reader takes the whole file as the header, then reads the
+      // items from the failed stream: a list sized from uninitialized memory
+      if(h.ply && h.lines < 100000)
+        file_error(filename_, "malformed or truncated PLY header: no 'end_header' line");
+      return;
+    }
+    const std::uintmax_t body = (std::min)(size_, h.bytes);
+    check_PLY_sizes(h, body);
+    if(h.ply && h.readable && h.format >= 0)
+      check_PLY_lists(h.elements, h.format, body);
+  }
+
+  Ply_header read_PLY_header(std::istream& in) const
+  {
+    Ply_header h;
+    std::string line;
+    for(; h.lines < 100000 && std::getline(in, line); ++h.lines)
+    {
+      h.bytes += line.size() + 1;
       std::istringstream words(line);
       std::string keyword;
       words >> keyword;
-      if(lines == 0)
-      {
-        ply = keyword == "ply";
-        continue;
-      }
-      if(lines == 1)
+      if(h.lines == 0)
+        h.ply = keyword == "ply";
+      else if(h.lines == 1)
       {
         // CGAL's reader takes the format from the second line, whatever its
         // first word (an "element" there is none; found by fuzz/)
         std::string f, version;
-        readable = static_cast<bool>(words >> f >> version);
-        format = f == "ascii" ? 0 : f == "binary_little_endian" ? 1 : f == "binary_big_endian" ? 2 : -1;
-        binary = f != "ascii";
-        continue;
+        h.readable = static_cast<bool>(words >> f >> version);
+        h.format = f == "ascii" ? 0 : f == "binary_little_endian" ? 1 : f == "binary_big_endian" ? 2 : -1;
+        h.binary = f != "ascii";
       }
-      if(keyword.empty())
-        readable = false; // (CGAL's reader fails on an empty header line)
+      else if(keyword.empty())
+        h.readable = false; // (CGAL's reader fails on an empty header line)
       else if(keyword == "element")
       {
         Ply_element e;
-        if(!(words >> e.name >> e.count)) return; // (CGAL's reader says what is wrong)
-        elements.push_back(e);
+        if(!(words >> e.name >> e.count)) { h.gave_up = true; return h; }
+        h.elements.push_back(e);
       }
-      else if(keyword == "property" && elements.empty())
-        // CGAL's reader adds a property to its last element, and has none
-        // yet: it would read out of bounds (found by fuzz/)
-        file_error(filename_, "PLY header: a property before any element (line " + std::to_string(lines + 1) + ")");
       else if(keyword == "property")
-      {
-        std::string type, name;
-        words >> type >> name;
-        Ply_property p;
-        if(type == "list") // "list COUNT ITEM NAME"; CGAL's reader takes integer counts only
-        {
-          std::string item;
-          words >> item >> p.name;
-          if(ply::is_vertex_element(elements.back().name) && (p.name == "x" || p.name == "y" || p.name == "z"))
-            // (as below: CGAL's point reader asserts on it; found by fuzz/)
-            file_error(filename_, "PLY header: vertex coordinate '" + p.name +
-                                    "' is a list, not float or double (line " + std::to_string(lines + 1) + ")");
-          p.list = true;
-          p.count = ply_type(name);
-          p.type = ply_type(item);
-          if(p.count.is_float) p.count.bytes = 0;
-        }
-        else
-        {
-          if(ply::is_vertex_element(elements.back().name) && (name == "x" || name == "y" || name == "z") &&
-             type != "float" && type != "float32" && type != "double" && type != "float64")
-            // CGAL's point reader asserts (and without assertions dereferences
-            // null) on an integer coordinate (found by fuzz/)
-            file_error(filename_, "PLY header: vertex coordinate '" + name + "' is '" + type +
-                                    "', not float or double (line " + std::to_string(lines + 1) + ")");
-          p.name = name;
-          p.type = ply_type(type);
-        }
-        if(p.name.empty())
-          readable = false; // (CGAL's reader fails on it)
-        else if(p.type.bytes != 0 && (!p.list || p.count.bytes != 0))
-        {
-          elements.back().least += binary ? (p.list ? p.count.bytes : p.type.bytes) : 2;
-          elements.back().properties.push_back(p);
-        }
-      }
+        add_PLY_property(words, h);
       else if(keyword == "end_header")
       {
-        ended = true;
+        h.ended = true;
         break;
       }
     }
-    if(!ended)
+    return h;
+  }
+
+  // a "property" line (after its keyword) of header line h.lines
+  void add_PLY_property(std::istringstream& words, Ply_header& h) const
+  {
+    const std::string at = " (line " + std::to_string(h.lines + 1) + ")";
+    if(h.elements.empty())
+      // CGAL's reader adds a property to its last element, and has none
+      // yet: it would read out of bounds (found by fuzz/)
+      file_error(filename_, "PLY header: a property before any element" + at);
+    Ply_element& element = h.elements.back();
+    const bool of_vertex = ply::is_vertex_element(element.name);
+    std::string type, name;
+    words >> type >> name;
+    Ply_property p;
+    if(type == "list") // "list COUNT ITEM NAME"; CGAL's reader takes integer counts only
     {
-      // CGAL's reader takes the whole file as the header, then reads the
-      // items from the failed stream: a list sized from uninitialized memory
-      if(ply && lines < 100000)
-        file_error(filename_, "malformed or truncated PLY header: no 'end_header' line");
-      return;
+      std::string item;
+      words >> item >> p.name;
+      if(of_vertex && (p.name == "x" || p.name == "y" || p.name == "z"))
+        // (as below: CGAL's point reader asserts on it; found by fuzz/)
+        file_error(filename_, "PLY header: vertex coordinate '" + p.name + "' is a list, not float or double" + at);
+      p.list = true;
+      p.count = ply_type(name);
+      p.type = ply_type(item);
+      if(p.count.is_float) p.count.bytes = 0;
     }
+    else
+    {
+      if(of_vertex && (name == "x" || name == "y" || name == "z") && type != "float" && type != "float32" &&
+         type != "double" && type != "float64")
+        // CGAL's point reader asserts (and without assertions dereferences
+        // null) on an integer coordinate (found by fuzz/)
+        file_error(filename_, "PLY header: vertex coordinate '" + name + "' is '" + type + "', not float or double" + at);
+      p.name = name;
+      p.type = ply_type(type);
+    }
+    if(p.name.empty())
+      h.readable = false; // (CGAL's reader fails on it)
+    else if(p.type.bytes != 0 && (!p.list || p.count.bytes != 0))
+    {
+      element.least += h.binary ? (p.list ? p.count.bytes : p.type.bytes) : 2;
+      element.properties.push_back(p);
+    }
+  }
+
+  // The items the header announces fit in the file's `body` bytes after it,
+  // or the file is refused before CGAL's reader allocates for them.
+  void check_PLY_sizes(const Ply_header& h, std::uintmax_t body) const
+  {
     long double least = 0;
     std::string announced;
     bool absurd = false;
-    const std::uintmax_t body = (std::min)(size_, header);
-    for(const Ply_element& e : elements)
+    for(const Ply_element& e : h.elements)
     {
       least += e.least * e.count;
       announced += (announced.empty() ? "" : ", ") + std::to_string(e.count) + " '" + e.name + "'";
@@ -261,10 +288,8 @@ private:
       file_error(filename_, "the header announces " + announced + ", more items than the file has bytes (" +
                               std::to_string(size_) + "): refused before reading");
     // (in ASCII the last value needs no separator after it)
-    if(least > static_cast<long double>(size_ - body) + (binary ? 0 : 1))
-      refuse(announced, static_cast<std::uintmax_t>((std::min)(least + header, 1.8e19L)));
-    if(ply && readable && format >= 0)
-      check_PLY_lists(elements, format, body);
+    if(least > static_cast<long double>(size_ - body) + (h.binary ? 0 : 1))
+      refuse(announced, static_cast<std::uintmax_t>((std::min)(least + h.bytes, 1.8e19L)));
   }
 
   // The integer CGAL's ASCII PLY reader reads, a list's count or a value:

@@ -7,7 +7,7 @@
 #ifndef GEODESIC_RIDGE_INTERNAL_SMSP_SOURCE_COORDINATES_H
 #define GEODESIC_RIDGE_INTERNAL_SMSP_SOURCE_COORDINATES_H
 
-#include <CGAL/version_macros.h>
+#include <CGAL/config.h> // CGAL_VERSION_NR, CGAL_VERSION_NUMBER
 
 #include <array>
 

@@ -85,8 +85,7 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
   ridge.label_border_loops();                           // the border's loops, each one node of the graph
   envelope_cells(ridge);                                // per face the exact envelope of its copies; a front per cell
   segments_inside_faces(ridge);                         // envelope edges between different fronts
-  if(passes.on(Ridge_pass::thin_faces)) thin_faces(ridge); // faces whose gradient is noise
-  else ridge.thin.assign(ridge.nf, 0);                  // (switched off: no face is thin)
+  if(passes.on(Ridge_pass::thin_faces)) thin_faces(ridge); // faces whose gradient is noise (else none)
   segments_along_edges(ridge);                          // pieces of mesh edges between different fronts
   merge_into_one_region(ridge);                         // weakest segments out until M minus the ridge is one region
   if(passes.on(Ridge_pass::rejoin_pieces)) rejoin_pieces(ridge); // merged segments back where a branch was cut off

@@ -82,7 +82,7 @@ struct Ridge_graph
     : tm(tm), maps(maps), E(E), face_copies(face_copies), mean_edge(mean_edge), minimum_angle(minimum_angle),
       kink_angle(kink_angle), angle_sum(angle_sum), regions(regions), statistics(statistics),
       faces(tm, maps.vpm, maps.fim), nf(num_faces(tm)),
-      same_front_tolerance(tuning::ridge::same_front * mean_edge), cones(cones),
+      same_front_tolerance(tuning::ridge::same_front * mean_edge), cones(cones), thin(nf, 0),
       coincident(coincident_tolerance(tm, maps.vpm))
   {}
 
@@ -319,7 +319,7 @@ struct Ridge_graph
   const std::size_t nf;
   const double same_front_tolerance;
   const Copy_cones* cones; // the solver's cones, if read (else the linear fields' jumps)
-  std::vector<char> thin; // per face of M: thin (see thin_faces())
+  std::vector<char> thin; // per face of M: thin (none until thin_faces() marks them)
   // per face: its envelope, either the shared whole-triangle one or one of
   // `computed_envelopes` (a deque: pointers into it stay valid as it grows)
   Lower_envelope<Q> whole_triangle;

@@ -32,7 +32,6 @@ template <class Ridge>
 void thin_faces(Ridge& ridge)
 {
   const double thin_face_ratio = tuning::ridge::thin_face_ratio;
-  ridge.thin.assign(ridge.nf, 0);
   for(std::size_t f = 0; f < ridge.nf; ++f)
   {
     const auto p = ridge.faces.corner_points(f);

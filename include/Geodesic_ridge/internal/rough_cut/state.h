@@ -6,13 +6,12 @@
 // before it left and fills its own part; `Rough_cut_locus_builder::run()` in
 // rough_cut_locus.h calls them in order. One struct instead of one class with
 // every pass as a member keeps each header to one group of passes.
-//
-// Included by rough_cut_locus.h after the result types (`Rough_cut_locus`,
-// `Edge_role`), which the state fills.
+// The state fills the result types of rough_cut_locus_result.h.
 #ifndef GEODESIC_RIDGE_INTERNAL_ROUGH_CUT_STATE_H
 #define GEODESIC_RIDGE_INTERNAL_ROUGH_CUT_STATE_H
 
 #include <Geodesic_ridge/internal/corner_angles.h>
+#include <Geodesic_ridge/rough_cut_locus_result.h>
 #include <Geodesic_ridge/parameters.h>
 #include <Geodesic_ridge/source.h>
 
