@@ -531,6 +531,48 @@ TEST_CASE("thin faces: caps on the same surface keep its ridge", "[slow][ridge_a
   }
 }
 
+// A cycle of the cut locus across thin faces: agreeing values united its two
+// fronts, and the ridge lacked a cycle of the topology (3holes_7k with caps
+// on 40 % of its faces, seed 7, from a point of face 2909: "1 components and 5
+// cycles; expected 1 and 2g + b = 6"; fertility_9k with `bench_ridge_accuracy
+// --caps 0.2` from v2696 likewise). Stage 3 then assembles the ridge again
+// without the thin-face rule: the ridge of `--without thin-faces`, which the
+// exact reference confirms (precision p95 0.25 mean edges).
+TEST_CASE("thin faces: a ridge that would lose a cycle is assembled without the rule", "[slow][ridge_accuracy]")
+{
+  Mesh capped = load("3holes_7k.off");
+  const unsigned seed = 7; // (fixed: these caps and this point are the case)
+  GT::add_caps(capped, 0.4, seed);
+  const auto points = GT::random_face_locations(capped, 1, seed + static_cast<unsigned>(capped.number_of_faces()));
+  const auto& source = points.front();
+  INFO("3holes_7k with caps (seed " << seed << "), source face " << std::size_t(source.first));
+  REQUIRE(std::size_t(source.first) == 2909);
+  const auto rc = Geodesic_ridge::compute_ridge_curve(capped, source);
+  const auto& r = rc.statistics.ridge;
+  std::cout << "3holes_7k with caps (seed " << seed << ") from a point of f2909: thin-face pieces undone "
+            << r.thin_face_pieces_undone << ", components " << r.components << ", cycles " << r.cycles << "\n";
+  CHECK(r.thin_face_pieces_undone > 0);
+  CHECK(r.thin_face_pieces == 0);
+  CHECK(r.components == 1);
+  CHECK(r.cycles == 6);
+  const auto without = Geodesic_ridge::compute_ridge_curve(
+      capped, source,
+      Geodesic_ridge::parameters::disabled_ridge_passes(static_cast<unsigned>(Geodesic_ridge::internal::Ridge_pass::thin_faces)));
+  REQUIRE(without.ridge_polylines().size() == rc.ridge_polylines().size());
+  for(std::size_t i = 0; i < rc.ridge_polylines().size(); ++i)
+  {
+    REQUIRE(without.ridge_polylines()[i].size() == rc.ridge_polylines()[i].size());
+    for(std::size_t j = 0; j < rc.ridge_polylines()[i].size(); ++j)
+      CHECK(without.ridge_polylines()[i][j].point == rc.ridge_polylines()[i][j].point);
+  }
+  const auto acc = GT::ridge_accuracy(exact_reference(capped, source), rc.ridge_polylines(), reference_options());
+  std::cout << std::setprecision(3) << "  against the exact reference: precision p95 " << acc.precision_p95
+            << ", recall p95 " << acc.recall_p95 << "\n";
+  REQUIRE(acc.major_samples > 0);
+  CHECK(acc.precision_p95 <= 0.5);
+  CHECK(acc.recall_p95 <= 0.5);
+}
+
 // CAD faces: a box whose sides are fans of long faces (`make_fan_box`, as
 // `bench_ridge_accuracy --boxes`). The cut graph K follows the fans' edges,
 // and two sheets of E that carry one front (one reaching some corners around

@@ -357,17 +357,23 @@ private:
     const bool fronts_as_copies = options_.cone_ridge && options_.field != Field::cone;
     const Ridge_curve_input in{face_copies_, copy_corners_, copy_cones_, cone_samples(), angles_->angle_sum,
                                mean_edge_, options_.minimum_angle, options_.kink_angle, split_at_kinks(),
-                               corner_fallback(), fronts_as_copies, options_.ridge_passes};
+                               corner_fallback(), fronts_as_copies, options_.ridge_passes, expected_cycles()};
     std::map<std::size_t, std::vector<Face_cone> > front_cones;
     assemble_ridge_curve(tm_, E_, maps_, in, result_.polylines, result_.regions, st_.ridge, front_cones);
     if(!front_cones.empty()) cones_with_fronts(front_cones);
   }
 
+  // the ridge with the border: connected, with 2g + b independent cycles
+  std::size_t expected_cycles() const
+  {
+    const Rough_cut_locus_statistics& s = result_.rough_cut_locus.statistics;
+    return static_cast<std::size_t>(2 * s.genus) + s.number_of_boundary_loops;
+  }
+
   void check_ridge_topology() const
   {
-    // the ridge with the border: connected, with 2g + b independent cycles
     const Rough_cut_locus_statistics& s = result_.rough_cut_locus.statistics;
-    const std::size_t cycles = static_cast<std::size_t>(2 * s.genus) + s.number_of_boundary_loops;
+    const std::size_t cycles = expected_cycles();
     if(st_.ridge.components != 1 || st_.ridge.cycles != cycles)
       throw Algorithm_error("the ridge" + std::string(s.number_of_boundary_loops > 0 ? " with the border" : "") +
                             " has " + std::to_string(st_.ridge.components) + " components and " +

@@ -72,6 +72,10 @@ struct Ridge_curve_statistics
   /// edge pieces of thin faces whose two sides are one front by their values
   /// alone (their gradients disagree; a thin face has none to trust)
   std::size_t thin_face_pieces = 0;
+  /// thin-face pieces of a first assembly whose ridge lacked a cycle of the
+  /// topology (1 component, 2g + b cycles): the ridge was assembled again
+  /// without them (0: the first assembly stands)
+  std::size_t thin_face_pieces_undone = 0;
   std::size_t regions_before_merge = 0;   ///< components of M minus the raw ridge
   std::size_t merged_segments = 0;        ///< segments removed to merge regions
   std::size_t rejoined_segments = 0;      ///< merged segments put back to join two pieces of the ridge

@@ -166,6 +166,7 @@ private:
     std::size_t line;           // the number of the line at p
     std::size_t first = 0, last = 0, first_line = 0; // the line read last: [first, last), its number
     std::vector<double> numbers; // its numbers (read_numbers())
+    std::string number;          // the characters of one number (a buffer kept from line to line)
 
     Ascii_OFF_lines(const std::string& text, std::size_t p)
       : text(text), p(p), line(1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(p), '\n')))
@@ -196,7 +197,6 @@ private:
     {
       numbers.clear();
       Characters c{text.data() + first, text.data() + last};
-      std::string number;
       for(;;)
       {
         while(c.peek() != -1 && is_space(static_cast<char>(c.peek()))) c.next();

@@ -227,11 +227,11 @@ private:
   // a "property" line (after its keyword) of header line h.lines
   void add_PLY_property(std::istringstream& words, Ply_header& h) const
   {
-    const std::string at = " (line " + std::to_string(h.lines + 1) + ")";
+    auto at = [&] { return " (line " + std::to_string(h.lines + 1) + ")"; }; // (only for an error)
     if(h.elements.empty())
       // CGAL's reader adds a property to its last element, and has none
       // yet: it would read out of bounds (found by fuzz/)
-      file_error(filename_, "PLY header: a property before any element" + at);
+      file_error(filename_, "PLY header: a property before any element" + at());
     Ply_element& element = h.elements.back();
     const bool of_vertex = ply::is_vertex_element(element.name);
     std::string type, name;
@@ -243,7 +243,7 @@ private:
       words >> item >> p.name;
       if(of_vertex && (p.name == "x" || p.name == "y" || p.name == "z"))
         // (as below: CGAL's point reader asserts on it; found by fuzz/)
-        file_error(filename_, "PLY header: vertex coordinate '" + p.name + "' is a list, not float or double" + at);
+        file_error(filename_, "PLY header: vertex coordinate '" + p.name + "' is a list, not float or double" + at());
       p.list = true;
       p.count = ply_type(name);
       p.type = ply_type(item);
@@ -255,7 +255,7 @@ private:
          type != "double" && type != "float64")
         // CGAL's point reader asserts (and without assertions dereferences
         // null) on an integer coordinate (found by fuzz/)
-        file_error(filename_, "PLY header: vertex coordinate '" + name + "' is '" + type + "', not float or double" + at);
+        file_error(filename_, "PLY header: vertex coordinate '" + name + "' is '" + type + "', not float or double" + at());
       p.name = name;
       p.type = ply_type(type);
     }

@@ -7,7 +7,8 @@
 // Every point of M is labelled by the copy that wins the lower envelope there.
 // Two labels are the same front when their copies are glued in the extended
 // surface across the edge between them (or carry equal fields, or agree along
-// an edge of a thin face, whose gradient is noise). The ridge is every
+// an edge of a thin face, whose gradient is noise, unless that costs the
+// ridge a cycle of the topology). The ridge is every
 // boundary between different fronts: inside faces (envelope edges) and along
 // mesh edges. It is then made connected with the topology of the cut locus:
 // the regions of M minus the ridge are merged (weakest ridge segment first)
@@ -51,7 +52,34 @@ struct Ridge_curve_input
   bool split_at_kinks, corner_fallback;
   bool fronts_as_copies; // the cone ridge sees a split copy's fronts as copies (their cones in `front_cones`)
   Ridge_passes passes;
+  std::size_t cycles; // 2g + b: the independent cycles of the ridge with the border of M
 };
+
+// From the fronts of the copies on: the envelopes, the ridge between
+// different fronts, one region, the main component and its polylines.
+template <class TriangleMesh, class Point, class Maps>
+void ridge_between_fronts(const TriangleMesh& tm, const Extended_surface<Point>& E, const Maps& maps,
+                          const Ridge_curve_input& in, const std::vector<Face_copies>& fronts,
+                          const Copy_cones* cones, Ridge_passes passes,
+                          std::vector<std::vector<Ridge_point<Point> > >& polylines,
+                          std::vector<std::vector<Ridge_region_cell> >& regions, Ridge_curve_statistics& st)
+{
+  Ridge_graph<TriangleMesh, Maps> ridge(tm, E, fronts, in.mean_edge, in.minimum_angle, in.kink_angle, maps,
+                                        in.angle_sum, regions, st, cones);
+  ridge.label_border_loops();                           // the border's loops, each one node of the graph
+  envelope_cells(ridge);                                // per face the exact envelope of its copies; a front per cell
+  segments_inside_faces(ridge);                         // envelope edges between different fronts
+  if(passes.on(Ridge_pass::thin_faces)) thin_faces(ridge); // faces whose gradient is noise (else none)
+  segments_along_edges(ridge);                          // pieces of mesh edges between different fronts
+  merge_into_one_region(ridge);                         // weakest segments out until M minus the ridge is one region
+  if(passes.on(Ridge_pass::rejoin_pieces)) rejoin_pieces(ridge); // merged segments back where a branch was cut off
+  if(in.minimum_angle > 0) prune_spurs(ridge, passes);  // free ends that end no cut locus, rule by rule
+  if(passes.on(Ridge_pass::join_border_components)) join_border_components(ridge); // pieces on different loops
+  if(passes.on(Ridge_pass::join_verified_pieces)) join_verified_pieces(ridge); // detached pieces with a kink
+  const auto kept = keep_main_component(ridge);         // the main component's segments
+  count_topology(ridge, kept);                          // junctions, free ends, components, cycles
+  chains_as_polylines(ridge, kept, polylines);          // its chains as polylines
+}
 
 // Stage 3: every pass in order, one line each. `front_cones`: the cones of
 // the fronts of the copies split at a kink (with `fronts_as_copies`).
@@ -79,22 +107,26 @@ void assemble_ridge_curve(const TriangleMesh& tm, const Extended_surface<Point>&
   // the cones (the copies' and the split fronts') give the fronts' arrival
   // directions at the ridge segments
   const Copy_cones cones{&in.copy_cones, &front_cones, &in.samples};
-  Ridge_graph<TriangleMesh, Maps> ridge(tm, E, split_at_kinks ? split_fronts : in.face_copies, in.mean_edge,
-                                        in.minimum_angle, in.kink_angle, maps, in.angle_sum, regions, st,
-                                        in.fronts_as_copies ? &cones : nullptr);
-  ridge.label_border_loops();                           // the border's loops, each one node of the graph
-  envelope_cells(ridge);                                // per face the exact envelope of its copies; a front per cell
-  segments_inside_faces(ridge);                         // envelope edges between different fronts
-  if(passes.on(Ridge_pass::thin_faces)) thin_faces(ridge); // faces whose gradient is noise (else none)
-  segments_along_edges(ridge);                          // pieces of mesh edges between different fronts
-  merge_into_one_region(ridge);                         // weakest segments out until M minus the ridge is one region
-  if(passes.on(Ridge_pass::rejoin_pieces)) rejoin_pieces(ridge); // merged segments back where a branch was cut off
-  if(in.minimum_angle > 0) prune_spurs(ridge, passes);  // free ends that end no cut locus, rule by rule
-  if(passes.on(Ridge_pass::join_border_components)) join_border_components(ridge); // pieces on different loops
-  if(passes.on(Ridge_pass::join_verified_pieces)) join_verified_pieces(ridge); // detached pieces with a kink
-  const auto kept = keep_main_component(ridge);         // the main component's segments
-  count_topology(ridge, kept);                          // junctions, free ends, components, cycles
-  chains_as_polylines(ridge, kept, polylines);          // its chains as polylines
+  const std::vector<Face_copies>& fronts = split_at_kinks ? split_fronts : in.face_copies;
+  const Copy_cones* front_cones_read = in.fronts_as_copies ? &cones : nullptr;
+  const Ridge_curve_statistics copies_statistics = st;
+  ridge_between_fronts(tm, E, maps, in, fronts, front_cones_read, passes, polylines, regions, st);
+  // The thin-face rule unites two fronts by their values alone, and where a
+  // cycle of the cut locus crosses thin faces that can open the cycle: the
+  // ridge then lacks a cycle of the topology (fertility_9k with caps from
+  // v2696: 7 of 8, `bench_ridge_accuracy --caps 0.2`). Such a ridge is
+  // assembled again without the rule (which keeps it wherever the topology
+  // holds: it moves the ridge off the caps).
+  if(st.thin_face_pieces > 0 && (st.components != 1 || st.cycles != in.cycles))
+  {
+    const std::size_t thin_face_pieces = st.thin_face_pieces;
+    st = copies_statistics;
+    polylines.clear();
+    Ridge_passes without_thin = passes;
+    without_thin.disabled |= static_cast<unsigned>(Ridge_pass::thin_faces);
+    ridge_between_fronts(tm, E, maps, in, fronts, front_cones_read, without_thin, polylines, regions, st);
+    st.thin_face_pieces_undone = thin_face_pieces;
+  }
 }
 
 } // namespace internal
