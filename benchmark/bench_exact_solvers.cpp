@@ -6,7 +6,7 @@
 // distances? And on a mesh refined by midpoint subdivision (each triangle into
 // four, the surface unchanged), is the exact ridge the coarse mesh's?
 //
-//   bench_exact_solvers [--source-vertex V] [--smsp-max-faces F] [--subdivide K] [MESH ...]
+//   bench_exact_solvers [--source-vertex V] [--smsp-max-faces F] [--subdivide K] [--windows] [MESH ...]
 //
 // Default meshes: bunny_70k, torus_100k and 3torus_200k of ../shared/data (or
 // every mesh of the repository's data/). Each measurement runs in a child
@@ -14,8 +14,18 @@
 // the file (the package's reader) and computing the ridge with the default
 // tolerance from vertex V (default 0). Columns: one solve on M by each
 // solver, their largest relative difference over the vertices, then the
-// whole process with `--solver vtp` and with `--solver exact` (skipped above
-// F faces, default 250,000: the exact pipeline needs about 40 KB per face).
+// whole process with `--solver vtp`, with `--solver vtp --field cone` (the
+// exact cone field: every face's windows kept) and with `--solver exact`
+// (skipped above F faces, default 250,000: the exact pipeline needs about 40
+// KB per face).
+//
+// With --windows, what the cone field keeps, on M from vertex V: the windows
+// per face (each a `Face_cone`), and how many of them are the lowest at some
+// point of a grid of 91 points per face (barycentric steps of 1/12): the most
+// that trimming the windows no point needs could save (an estimate from
+// above: a window lowest only between the grid's points counts as unneeded);
+// how many a safe test drops (`beaten_by_corners`), and the pairs of windows
+// of one face with the same cone (apex and offset within 1e-9).
 //
 // With --subdivide K, each mesh is also subdivided K times and the ridge of
 // the fine mesh (vtp) is compared with the coarse mesh's (vtp): distances from
@@ -28,6 +38,7 @@
 #include <Geodesic_ridge/compute_geodesic_ridge.h>
 #include <Geodesic_ridge/solvers/Exact_solver.h>
 #include <Geodesic_ridge/solvers/Window_propagation_solver.h>
+#include <Geodesic_ridge/internal/face_cone_field.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -170,6 +181,86 @@ std::string difference_text(double d)
   return b;
 }
 
+// The windows of every face of m from vertex `source` (all kept, as for the
+// cone field), and those lowest at some point of a grid of 91 points per face.
+struct Window_use
+{
+  std::size_t faces = 0, windows = 0, lowest_somewhere = 0, dropped_by_corners = 0, same_cone_pairs = 0;
+  double seconds = 0;
+};
+
+// Whether the paths through the corners of face (plane, D: its corners'
+// distances) are shorter than window w everywhere in the face: w's value at a
+// point x is at least its offset plus |x - apex|, at least its straight value
+// at corner k minus |x - c_k|, and the distance at x at most D_k + |x - c_k|;
+// so w loses within half of (straight value at c_k - D_k) of c_k. True if
+// those disks cover the face's three kites (corner, edge midpoints, centroid).
+bool beaten_by_corners(const Geodesic_ridge::internal::Face_plane& plane, const std::array<double, 3>& D,
+                       const Geodesic_ridge::Face_cone& w)
+{
+  const auto a = plane.point(w.apex);
+  const K::Point_2 c[3] = {plane.corner(0), plane.corner(1), plane.corner(2)};
+  const K::Point_2 g = CGAL::centroid(c[0], c[1], c[2]);
+  for(int k = 0; k < 3; ++k)
+  {
+    const double reach = (w.offset + std::sqrt(CGAL::squared_distance(a, c[k])) - D[k]) / 2;
+    const double kite = std::sqrt((std::max)({CGAL::squared_distance(c[k], CGAL::midpoint(c[k], c[(k + 1) % 3])),
+                                              CGAL::squared_distance(c[k], CGAL::midpoint(c[k], c[(k + 2) % 3])),
+                                              CGAL::squared_distance(c[k], g)}));
+    if(!(reach > kite * (1 + 1e-9) + 1e-12 * D[k])) return false;
+  }
+  return true;
+}
+
+Window_use window_use(const Mesh& m, std::size_t source)
+{
+  Window_use u;
+  u.faces = m.number_of_faces();
+  std::vector<double> d(m.number_of_vertices());
+  std::vector<Geodesic_ridge::Face_cone> sampled;
+  std::vector<std::vector<Geodesic_ridge::Face_cone> > windows;
+  const auto t = std::chrono::steady_clock::now();
+  Geodesic_ridge::Window_propagation_solver()(m, Mesh::Vertex_index(static_cast<Mesh::size_type>(source)),
+                                              CGAL::make_property_map(d), sampled, [](std::size_t) { return true; },
+                                              Geodesic_ridge::Cone_samples::cone_samples(), &windows);
+  u.seconds = seconds_since(t);
+  const int steps = 12;
+  for(auto f : m.faces())
+  {
+    const auto& w = windows[std::size_t(f)];
+    u.windows += w.size();
+    const auto h = m.halfedge(f); // CGAL's corner order: source(h), target(h), target(next(h))
+    const std::array<K::Point_3, 3> p = {{m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h)))}};
+    const Geodesic_ridge::internal::Face_plane plane(p);
+    const std::array<double, 3> D = {{d[std::size_t(m.source(h))], d[std::size_t(m.target(h))],
+                                      d[std::size_t(m.target(m.next(h)))]}};
+    for(std::size_t k = 0; k < w.size(); ++k)
+    {
+      u.dropped_by_corners += beaten_by_corners(plane, D, w[k]);
+      const double tolerance = 1e-9 * (plane.l + w[k].offset);
+      for(std::size_t j = k + 1; j < w.size(); ++j)
+        u.same_cone_pairs += std::sqrt(CGAL::squared_distance(plane.point(w[k].apex), plane.point(w[j].apex))) <= tolerance &&
+                             std::abs(w[k].offset - w[j].offset) <= tolerance;
+    }
+    std::vector<char> lowest(w.size(), 0);
+    for(int i = 0; i <= steps; ++i)
+      for(int j = 0; i + j <= steps; ++j)
+      {
+        const auto x = plane.point({{double(steps - i - j) / steps, double(i) / steps, double(j) / steps}});
+        double best = std::numeric_limits<double>::infinity();
+        std::size_t at = w.size();
+        for(std::size_t k = 0; k < w.size(); ++k)
+        {
+          const double v = Geodesic_ridge::internal::cone_path(plane, w[k], x).second;
+          if(v < best) { best = v; at = k; }
+        }
+        if(at < w.size()) lowest[at] = 1;
+      }
+    u.lowest_somewhere += std::size_t(std::count(lowest.begin(), lowest.end(), 1));
+  }
+  return u;
+}
+
 double mean_edge(const Mesh& m)
 {
   double sum = 0;
@@ -183,6 +274,7 @@ int main(int argc, char** argv)
 {
   std::size_t source = 0, smsp_max_faces = 250000;
   int subdivide = 0;
+  bool windows_table = false;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i)
   {
@@ -190,6 +282,7 @@ int main(int argc, char** argv)
     if(a == "--source-vertex" && i + 1 < argc) source = std::stoul(argv[++i]);
     else if(a == "--smsp-max-faces" && i + 1 < argc) smsp_max_faces = std::stoul(argv[++i]);
     else if(a == "--subdivide" && i + 1 < argc) subdivide = std::stoi(argv[++i]);
+    else if(a == "--windows") windows_table = true;
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << "\n"; return 2; }
     else files.push_back(a);
   }
@@ -204,19 +297,20 @@ int main(int argc, char** argv)
   typedef Mesh::Vertex_index vertex_descriptor;
 
   std::cout << "| mesh | F | SMSP on M (s) | vtp on M (s) | max rel. difference | vtp windows / face "
-               "| pipeline vtp (s) | peak (MB) | KB / face | F(E)/F | pipeline exact (s) | peak (MB) |\n"
-               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+               "| pipeline vtp (s) | peak (MB) | KB / face | F(E)/F | vtp cone field (s) | peak (MB) | KB / face "
+               "| pipeline exact (s) | peak (MB) |\n"
+               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for(const std::string& file : files)
   {
     // first the whole process, each in a child forked while this process is
     // small (a child's peak counts the pages it shares with its parent)
     const vertex_descriptor s(static_cast<Mesh::size_type>(source));
-    auto whole = [&](auto solver) {
+    auto whole = [&](auto solver, Geodesic_ridge::Field field) {
       return in_child([&] {
         const auto t = std::chrono::steady_clock::now();
         Mesh m;
         Geodesic_ridge::IO::read_triangle_mesh(file, m);
-        const auto rc = Geodesic_ridge::compute_ridge_curve(m, s, p::solver(solver));
+        const auto rc = Geodesic_ridge::compute_ridge_curve(m, s, p::solver(solver, p::field(field)));
         Measure r;
         r.seconds = seconds_since(t);
         r.mesh_faces = m.number_of_faces();
@@ -225,9 +319,11 @@ int main(int argc, char** argv)
         return r;
       });
     };
-    const Measure vtp = whole(Geodesic_ridge::Window_propagation_solver());
-    const Measure exact =
-        vtp.ok && vtp.mesh_faces <= smsp_max_faces ? whole(Geodesic_ridge::Exact_solver()) : Measure();
+    const Measure vtp = whole(Geodesic_ridge::Window_propagation_solver(), Geodesic_ridge::Field::linear);
+    const Measure vtp_cone = whole(Geodesic_ridge::Window_propagation_solver(), Geodesic_ridge::Field::cone);
+    const Measure exact = vtp.ok && vtp.mesh_faces <= smsp_max_faces
+                              ? whole(Geodesic_ridge::Exact_solver(), Geodesic_ridge::Field::linear)
+                              : Measure();
     // one solve on M by each solver, and the largest difference
     const Measure on_mesh = in_child([&] {
       Mesh mesh;
@@ -261,13 +357,35 @@ int main(int argc, char** argv)
       std::snprintf(b, sizeof b, "%.*f", digits, x);
       return std::string(b);
     };
-    std::printf("| %s | %zu | %s | %.3f | %s | %.1f | %s | %s | %s | %s | %s | %s |\n",
+    std::printf("| %s | %zu | %s | %.3f | %s | %.1f | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
                 fs::path(file).stem().string().c_str(), F, cell(t_smsp >= 0, t_smsp, 2).c_str(), t_vtp,
                 t_smsp >= 0 ? difference_text(difference).c_str() : "–", windows,
                 cell(vtp.ok, vtp.seconds, 2).c_str(), cell(vtp.ok, vtp.peak_kb / 1024., 0).c_str(),
                 cell(vtp.ok, double(vtp.peak_kb) / F, 2).c_str(), cell(vtp.ok, double(vtp.faces) / F, 3).c_str(),
-                cell(exact.ok, exact.seconds, 2).c_str(), cell(exact.ok, exact.peak_kb / 1024., 0).c_str());
+                cell(vtp_cone.ok, vtp_cone.seconds, 2).c_str(), cell(vtp_cone.ok, vtp_cone.peak_kb / 1024., 0).c_str(),
+                cell(vtp_cone.ok, double(vtp_cone.peak_kb) / F, 2).c_str(), cell(exact.ok, exact.seconds, 2).c_str(), cell(exact.ok, exact.peak_kb / 1024., 0).c_str());
     std::fflush(stdout);
+  }
+
+  if(windows_table)
+  {
+    std::cout << "\nThe windows the cone field keeps, on M from vertex " << source << " (each a Face_cone of "
+              << sizeof(Geodesic_ridge::Face_cone) << " bytes)\n\n"
+                 "| mesh | F | windows / face | lowest at a grid point / face | share | beaten by the corners / face "
+                 "| pairs with one cone | KB / face kept | solve keeping them (s) |\n"
+                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for(const std::string& file : files)
+    {
+      Mesh m;
+      Geodesic_ridge::IO::read_triangle_mesh(file, m);
+      const Window_use u = window_use(m, source);
+      const double per_face = double(u.windows) / double(u.faces);
+      std::printf("| %s | %zu | %.1f | %.1f | %.2f | %.4f | %zu | %.2f | %.2f |\n", fs::path(file).stem().string().c_str(),
+                  u.faces, per_face, double(u.lowest_somewhere) / double(u.faces),
+                  double(u.lowest_somewhere) / double(u.windows), double(u.dropped_by_corners) / double(u.faces),
+                  u.same_cone_pairs, per_face * sizeof(Geodesic_ridge::Face_cone) / 1024., u.seconds);
+      std::fflush(stdout);
+    }
   }
 
   if(subdivide <= 0) return 0;
