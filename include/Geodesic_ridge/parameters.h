@@ -192,13 +192,13 @@ namespace parameters {
   Named_parameters<T, internal_np::name##_t, NamedParameters> name(T value, const NamedParameters& np) \
   {                                                                                                   \
     return Named_parameters<T, internal_np::name##_t, NamedParameters>(value, np);                    \
-  }
+  }                                                                                                   \
+  static_assert(true, "a use ends with ';', as a declaration does")
 
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Dual edges of the cut locus whose significance is below `t` times the
 /// total area are pruned. `t` must be in [0, 0.5).
-GEODESIC_RIDGE_NAMED_PARAMETER(double, tolerance)
-
+GEODESIC_RIDGE_NAMED_PARAMETER(double, tolerance);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Every pruned branch of the dual tree that hangs from the kept structure
 /// (or from a branch kept this way) and holds at least `degrees` of Gaussian
@@ -206,8 +206,7 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, tolerance)
 /// is kept too (default `default_leaf_curvature`; 0 turns it off). A leaf of the cut locus of a polyhedral
 /// surface is a vertex of positive curvature: this brings K, and so the ridge,
 /// to the corners and tips that the tolerance cut off.
-GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_curvature)
-
+GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_curvature);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// A branch of the dual tree kept by the tolerance is pruned back, from its
 /// tip, while the faces beyond its dual edge enclose less than `degrees` of
@@ -218,8 +217,7 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, leaf_curvature)
 /// A branch enclosing (nearly) no curvature separates two parts of one front:
 /// a false branch, which leaves creases where the solver's copies on its two
 /// sides meet. On genus 0 the smaller curvature of the two sides counts.
-GEODESIC_RIDGE_NAMED_PARAMETER(double, branch_curvature)
-
+GEODESIC_RIDGE_NAMED_PARAMETER(double, branch_curvature);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// `IO::read_triangle_mesh()` repairs the mesh with `repair_mesh()` (merges
 /// vertices at one position, removes faces with fewer than three distinct
@@ -228,8 +226,7 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, branch_curvature)
 /// what the repair fixes (default `false`; polygons are triangulated either
 /// way). The returned `File_index_map` says what changed and maps the repaired
 /// mesh back to the file's indices.
-GEODESIC_RIDGE_NAMED_PARAMETER(bool, repair)
-
+GEODESIC_RIDGE_NAMED_PARAMETER(bool, repair);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// The geodesic solver run on the extended surface, a model of `GeodesicSolver`
 /// (default `Exact_solver`).
@@ -247,24 +244,24 @@ Named_parameters<Solver, internal_np::solver_t, NamedParameters> solver(const So
 }
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Extension rings grown everywhere before the first pass (default 3).
-GEODESIC_RIDGE_NAMED_PARAMETER(int, initial_rings)
+GEODESIC_RIDGE_NAMED_PARAMETER(int, initial_rings);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Rings grown, after a pass, around the copies that still win on a border
 /// edge of E, before the next pass: at least this many (default 4), and half
 /// the depth reached when that is more.
-GEODESIC_RIDGE_NAMED_PARAMETER(int, extension_step)
+GEODESIC_RIDGE_NAMED_PARAMETER(int, extension_step);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// A safety cap on extension rings (default 256): rings beyond the initial ones
 /// grow only around copies that still win on a border edge of E, and the growth
 /// stops by itself when none does (`statistics.ring_cap_hit` says when the cap
 /// stopped it instead).
-GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_rings)
+GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_rings);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Solves of the solver on E at most (default 3). With predicted extension,
 /// fast-marching passes decide the growth and the solver runs on the final E;
 /// if copies of its solution still win on E's border, E grows and the solver
 /// runs again. Without, every pass is a solve of the solver.
-GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_solves)
+GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_solves);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Which distances on M shape the shortest-path tree of stage 1: with `false`
 /// (default) fast marching (`Fast_marching_solver`, a fraction of one exact
@@ -273,24 +270,24 @@ GEODESIC_RIDGE_NAMED_PARAMETER(int, maximum_solves)
 /// the cut, takes the wrong side of a saddle; with the exact solver the solver's
 /// tree cuts the worst recall measured (70 sources of 14 meshes) from 3.5 to 0.6
 /// mean edges, at about 1.8 times the time.
-GEODESIC_RIDGE_NAMED_PARAMETER(bool, tree_from_solver)
+GEODESIC_RIDGE_NAMED_PARAMETER(bool, tree_from_solver);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// With `true` (default), the dynamic extension decides where to grow from
 /// fast-marching passes on E, and the solver runs once, on the final E; with
 /// `false`, every extension step is decided by a solve of the solver.
 /// `maximum_solves` bounds the passes of either kind.
-GEODESIC_RIDGE_NAMED_PARAMETER(bool, predicted_extension)
+GEODESIC_RIDGE_NAMED_PARAMETER(bool, predicted_extension);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// With the fast-marching solver, rings grown around the whole final E before
 /// its last pass (default `default_fast_marching_margin`, 2; 0 for none).
 /// Fast marching updates a vertex from its one-ring; on E's border that ring
 /// is cut, and the values there and beyond carry more of its error than on M.
 /// Other solvers ignore it.
-GEODESIC_RIDGE_NAMED_PARAMETER(int, fast_marching_margin)
+GEODESIC_RIDGE_NAMED_PARAMETER(int, fast_marching_margin);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Free ends of the ridge whose gradient jump is below this angle (degrees,
 /// default 15) are pruned, repeatedly; 0 keeps every branch.
-GEODESIC_RIDGE_NAMED_PARAMETER(double, minimum_spur_angle)
+GEODESIC_RIDGE_NAMED_PARAMETER(double, minimum_spur_angle);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// Copies glued in E (one sheet) whose gradients jump by at least this angle
 /// across a mesh edge (degrees, default 60) still meet at a ridge there: where
@@ -300,7 +297,7 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, minimum_spur_angle)
 /// front, and the split goes on into the copies glued to it (counted in
 /// `Ridge_curve_statistics::split_copies`; user manual, \ref GeodesicRidgeSecStage3).
 /// 0 keeps the sheet-only definition (ridges between sheets only).
-GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle)
+GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// With the exact solver's kink split (`kink_angle`), a copy alone in its face
 /// whose corner no sample's front reaches exactly (the kink passes between the
@@ -315,14 +312,13 @@ GEODESIC_RIDGE_NAMED_PARAMETER(double, kink_angle)
 /// of them (167 with `false`; bunny_7k from vertex 697 0.05 instead of 2.8),
 /// precision p95 (where fronts meet at 30 degrees or more) within 0.25 mean
 /// edge on 164 of them (167 with `false`), at 1.04 times the time.
-GEODESIC_RIDGE_NAMED_PARAMETER(bool, corner_fallback)
+GEODESIC_RIDGE_NAMED_PARAMETER(bool, corner_fallback);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// `Field::linear` (default) or `Field::cone`: with `cone`, the ridge curve
 /// also keeps, per face, the cone of every copy (`Ridge_curve::cones`; the
 /// exact solver reads them from its shortest paths), and the distance field
 /// evaluates them instead of the linear fields.
-GEODESIC_RIDGE_NAMED_PARAMETER(Field, field)
-
+GEODESIC_RIDGE_NAMED_PARAMETER(Field, field);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// The ridge reported (`Ridge_curve::ridge_polylines()`, the output of
 /// `compute_geodesic_ridge()`) is the cone ridge (`Ridge_curve::cone_polylines`):
@@ -341,19 +337,17 @@ GEODESIC_RIDGE_NAMED_PARAMETER(Field, field)
 /// precision p95 within 0.25 mean edge on 164 of them instead of 156 with
 /// the corner fallback (167 instead of 161 without), at 1.05 times the time
 /// summed over its meshes (1.3 on 1k-face meshes).
-GEODESIC_RIDGE_NAMED_PARAMETER(bool, cone_ridge)
-
+GEODESIC_RIDGE_NAMED_PARAMETER(bool, cone_ridge);
 /// \ingroup PkgGeodesicRidgeNamedParameters
 /// The cone ridge (`Ridge_curve::cone_polylines`)
 /// is split until the curve is within `t` mean edge lengths of the midpoint of
 /// every chord (default `default_cone_ridge_tolerance`; `t` in (0, 1]).
-GEODESIC_RIDGE_NAMED_PARAMETER(double, cone_ridge_tolerance)
-
+GEODESIC_RIDGE_NAMED_PARAMETER(double, cone_ridge_tolerance);
 /// \cond SKIP_IN_MANUAL
 /// For measuring, not for use: stage 3's optional passes and spur rules to
 /// switch off, a bit each (`internal::Ridge_pass`; `bench_ridge_accuracy
 /// --without NAME`). Default 0: every pass runs.
-GEODESIC_RIDGE_NAMED_PARAMETER(unsigned, disabled_ridge_passes)
+GEODESIC_RIDGE_NAMED_PARAMETER(unsigned, disabled_ridge_passes);
 /// \endcond
 
 /// \ingroup PkgGeodesicRidgeNamedParameters
