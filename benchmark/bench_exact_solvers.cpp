@@ -39,6 +39,7 @@
 #include <Geodesic_ridge/solvers/Exact_solver.h>
 #include <Geodesic_ridge/solvers/Window_propagation_solver.h>
 #include <Geodesic_ridge/internal/face_cone_field.h>
+#include <Geodesic_ridge/internal/faces_by_index.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -225,15 +226,16 @@ Window_use window_use(const Mesh& m, std::size_t source)
                                               Geodesic_ridge::Cone_samples::cone_samples(), &windows);
   u.seconds = seconds_since(t);
   const int steps = 12;
+  const Geodesic_ridge::internal::Faces_by_index<Mesh, Mesh::Property_map<Mesh::Vertex_index, K::Point_3> > corners(
+      m, m.points(), get(CGAL::face_index, m));
   for(auto f : m.faces())
   {
     const auto& w = windows[std::size_t(f)];
     u.windows += w.size();
-    const auto h = m.halfedge(f); // CGAL's corner order: source(h), target(h), target(next(h))
-    const std::array<K::Point_3, 3> p = {{m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h)))}};
-    const Geodesic_ridge::internal::Face_plane plane(p);
-    const std::array<double, 3> D = {{d[std::size_t(m.source(h))], d[std::size_t(m.target(h))],
-                                      d[std::size_t(m.target(m.next(h)))]}};
+    const auto h = corners.corner_halfedges(std::size_t(f)); // (CGAL's corner order, as the windows')
+    const Geodesic_ridge::internal::Face_plane plane(corners.corner_points(std::size_t(f)));
+    const std::array<double, 3> D = {{d[std::size_t(m.source(h[0]))], d[std::size_t(m.source(h[1]))],
+                                      d[std::size_t(m.source(h[2]))]}};
     for(std::size_t k = 0; k < w.size(); ++k)
     {
       u.dropped_by_corners += beaten_by_corners(plane, D, w[k]);
